@@ -1,0 +1,296 @@
+"""Language-model backends behind one async interface, and the per-endpoint scheduler.
+
+``ollama`` talks to one or more Ollama servers through the ``ollama`` package's AsyncClient
+(``/api/chat``, ``stream: false``); ``gold`` answers every request with the ground truth, which
+proves the harness end to end on a machine without a model (like SWE-bench's gold patches).
+
+The scheduler keeps at most ``batch_size`` requests in flight per endpoint (Ollama queues
+silently beyond its parallel slots, then answers 503) and retries transient failures —
+connection errors, timeouts, 408/429/5xx — with exponential backoff. Other 4xx errors (unknown
+model, unsupported option) are permanent and never retried.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import httpx
+import ollama
+import structlog
+from tenacity import AsyncRetrying, retry_if_exception, stop_after_attempt, wait_exponential
+
+log = structlog.get_logger(__name__)
+
+TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504})
+
+
+@dataclass(frozen=True)
+class LLMSettings:
+    """LLM settings of a run (paper section 2.2.1, first group)."""
+
+    model: str = "gold"
+    backend: str = "gold"
+    hosts: tuple[str, ...] = ("http://127.0.0.1:11434",)
+    temperature: float = 0.0
+    seed: int | None = 42
+    think: bool | str | None = False
+    num_ctx: int = 4096
+    num_predict: int = 2048
+    keep_alive: str | float | None = "30m"
+    batch_size: int = 4
+    timeout_s: float = 600.0
+    max_attempts: int = 4
+    backoff_s: float = 1.0
+
+    def options(self) -> dict[str, Any]:
+        opts: dict[str, Any] = {
+            "temperature": self.temperature,
+            "num_ctx": self.num_ctx,
+            "num_predict": self.num_predict,
+        }
+        if self.seed is not None:
+            opts["seed"] = self.seed
+        return opts
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "model": self.model, "backend": self.backend, "hosts": list(self.hosts),
+            "temperature": self.temperature, "seed": self.seed, "think": self.think,
+            "num_ctx": self.num_ctx, "num_predict": self.num_predict, "keep_alive": self.keep_alive,
+            "batch_size": self.batch_size, "timeout_s": self.timeout_s, "max_attempts": self.max_attempts,
+        }
+
+
+@dataclass(frozen=True)
+class ChatRequest:
+    """One chat call. ``gold`` is the expected answer; only the gold backend reads it."""
+
+    messages: tuple[dict[str, str], ...]
+    purpose: str
+    task_key: str
+    gold: str | None = None
+
+    @property
+    def prompt(self) -> str:
+        return "\n\n".join(m["content"] for m in self.messages)
+
+
+@dataclass(frozen=True)
+class ChatResponse:
+    content: str
+    thinking: str = ""
+    done_reason: str | None = "stop"
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
+    total_duration_s: float = 0.0
+    load_duration_s: float = 0.0
+    eval_duration_s: float = 0.0
+    wall_time_s: float = 0.0
+    attempts: int = 1
+    endpoint: str = ""
+
+    @property
+    def truncated(self) -> bool:
+        return self.done_reason == "length"
+
+    @property
+    def context_used(self) -> int:
+        return self.prompt_tokens + self.completion_tokens
+
+    def meta(self) -> dict[str, Any]:
+        return {
+            "done_reason": self.done_reason,
+            "truncated": self.truncated,
+            "prompt_tokens": self.prompt_tokens,
+            "completion_tokens": self.completion_tokens,
+            "context_used": self.context_used,
+            "total_duration_s": round(self.total_duration_s, 4),
+            "load_duration_s": round(self.load_duration_s, 4),
+            "eval_duration_s": round(self.eval_duration_s, 4),
+            "wall_time_s": round(self.wall_time_s, 4),
+            "attempts": self.attempts,
+            "endpoint": self.endpoint,
+        }
+
+
+class LLMError(Exception):
+    """A request that could not be answered: an infrastructure failure, not a model failure."""
+
+    def __init__(self, message: str, *, transient: bool, status: int | None = None) -> None:
+        super().__init__(message)
+        self.transient = transient
+        self.status = status
+
+
+class Backend(Protocol):
+    name: str
+
+    async def chat(self, request: ChatRequest) -> ChatResponse: ...
+
+    async def aclose(self) -> None: ...
+
+
+class GoldBackend:
+    """Answers with the ground truth: the required components and the reference program."""
+
+    name = "gold"
+
+    async def chat(self, request: ChatRequest) -> ChatResponse:
+        if request.gold is None:
+            raise LLMError(f"no gold answer for {request.purpose} of {request.task_key}", transient=False)
+        return ChatResponse(content=request.gold, done_reason="stop", endpoint="gold")
+
+    async def aclose(self) -> None:
+        return None
+
+
+@dataclass
+class Endpoint:
+    host: str
+    client: Any
+    slots: asyncio.Semaphore
+    capacity: int
+    in_flight: int = 0
+    failures: int = 0
+    disabled_until: float = 0.0
+
+    @property
+    def free(self) -> int:
+        return self.capacity - self.in_flight
+
+
+def _is_transient(exc: BaseException) -> bool:
+    return isinstance(exc, LLMError) and exc.transient
+
+
+class OllamaBackend:
+    """Ollama's ``/api/chat`` through ``ollama.AsyncClient``, spread over one or more hosts."""
+
+    name = "ollama"
+
+    def __init__(self, settings: LLMSettings, client_factory: Any = None) -> None:
+        self.settings = settings
+        factory = client_factory or (lambda host: ollama.AsyncClient(host=host, timeout=settings.timeout_s))
+        self.endpoints = [
+            Endpoint(host=h, client=factory(h), slots=asyncio.Semaphore(settings.batch_size),
+                     capacity=settings.batch_size)
+            for h in settings.hosts
+        ]
+        self._pick_lock = asyncio.Lock()
+
+    async def chat(self, request: ChatRequest) -> ChatResponse:
+        attempts = 0
+        retrying = AsyncRetrying(
+            retry=retry_if_exception(_is_transient),
+            stop=stop_after_attempt(self.settings.max_attempts),
+            wait=wait_exponential(multiplier=self.settings.backoff_s, max=60),
+            reraise=True,
+        )
+        async for attempt in retrying:
+            with attempt:
+                attempts += 1
+                response = await self._chat_once(request)
+                return _with_attempts(response, attempts)
+        raise AssertionError("unreachable")  # pragma: no cover
+
+    def _choose(self) -> Endpoint:
+        now = time.monotonic()
+        usable = [e for e in self.endpoints if e.disabled_until <= now] or self.endpoints
+        return max(usable, key=lambda e: (e.free, -e.failures))
+
+    async def _chat_once(self, request: ChatRequest) -> ChatResponse:
+        async with self._pick_lock:
+            endpoint = self._choose()
+            endpoint.in_flight += 1
+        try:
+            async with endpoint.slots:
+                t0 = time.perf_counter()
+                try:
+                    raw = await endpoint.client.chat(
+                        model=self.settings.model,
+                        messages=list(request.messages),
+                        stream=False,
+                        think=self.settings.think,
+                        options=self.settings.options(),
+                        keep_alive=self.settings.keep_alive,
+                    )
+                except ollama.ResponseError as exc:
+                    transient = exc.status_code in TRANSIENT_STATUS
+                    self._note_failure(endpoint, transient)
+                    raise LLMError(f"ollama error {exc.status_code}: {exc.error}", transient=transient,
+                                   status=exc.status_code) from exc
+                except (ConnectionError, httpx.TransportError, TimeoutError) as exc:
+                    self._note_failure(endpoint, True)
+                    raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
+                                   transient=True) from exc
+                except (ValueError, TypeError, KeyError) as exc:  # malformed body from the server
+                    self._note_failure(endpoint, True)
+                    raise LLMError(f"malformed response from {endpoint.host}: {exc}", transient=True) from exc
+                wall = time.perf_counter() - t0
+        finally:
+            endpoint.in_flight -= 1
+        endpoint.failures = 0
+        return _from_ollama(raw, wall, endpoint.host)
+
+    def _note_failure(self, endpoint: Endpoint, transient: bool) -> None:
+        if transient:
+            endpoint.failures += 1
+            if endpoint.failures >= 3:
+                endpoint.disabled_until = time.monotonic() + min(60.0, 5.0 * endpoint.failures)
+                log.warning("endpoint taken out", host=endpoint.host, failures=endpoint.failures)
+
+    async def aclose(self) -> None:
+        for endpoint in self.endpoints:
+            close = getattr(endpoint.client, "close", None)
+            if close is not None:
+                await close()
+
+
+def _ns(value: Any) -> float:
+    return float(value or 0) / 1e9
+
+
+def _from_ollama(raw: Any, wall: float, host: str) -> ChatResponse:
+    message = raw.message
+    return ChatResponse(
+        content=message.content or "",
+        thinking=getattr(message, "thinking", None) or "",
+        done_reason=raw.done_reason,
+        prompt_tokens=int(raw.prompt_eval_count or 0),
+        completion_tokens=int(raw.eval_count or 0),
+        total_duration_s=_ns(raw.total_duration),
+        load_duration_s=_ns(raw.load_duration),
+        eval_duration_s=_ns(raw.eval_duration),
+        wall_time_s=wall,
+        endpoint=host,
+    )
+
+
+def _with_attempts(response: ChatResponse, attempts: int) -> ChatResponse:
+    if attempts == 1:
+        return response
+    from dataclasses import replace
+
+    return replace(response, attempts=attempts)
+
+
+def make_backend(settings: LLMSettings) -> Backend:
+    if settings.backend == "gold":
+        return GoldBackend()
+    if settings.backend == "ollama":
+        return OllamaBackend(settings)
+    raise ValueError(f"unknown backend {settings.backend!r} (choose gold or ollama)")
+
+
+def user_messages(*texts: str) -> tuple[dict[str, str], ...]:
+    return tuple({"role": "user", "content": t} for t in texts)
+
+
+__all__: Sequence[str] = [
+    "Backend", "ChatRequest", "ChatResponse", "GoldBackend", "LLMError", "LLMSettings", "OllamaBackend",
+    "make_backend", "user_messages",
+]

@@ -1,0 +1,84 @@
+"""The two LLM steps of a task: choose components, then write the program.
+
+Each returns a frozen record with the prompt, the raw answer, what was parsed from it and the
+response metadata (tokens, durations, truncation). Infrastructure failures (the server could not
+answer) are recorded as such, distinct from a malformed answer of the model.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from meceng.agents.catalog import Catalog
+from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMError, user_messages
+from meceng.agents.parsing import extract_code, parse_components
+from meceng.agents.prompts import code_prompt, gold_code, gold_selection, select_prompt
+from meceng.tasks.base import TaskInstance
+
+
+@dataclass(frozen=True)
+class Selection:
+    prompt: str
+    answer: str
+    names: tuple[str, ...]
+    unknown: tuple[str, ...] = ()
+    error: str | None = None
+    infrastructure_error: str | None = None
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"prompt": self.prompt, "answer": self.answer, "names": list(self.names),
+                "unknown": list(self.unknown), "error": self.error,
+                "infrastructure_error": self.infrastructure_error, "meta": self.meta}
+
+
+@dataclass(frozen=True)
+class Generation:
+    prompt: str
+    answer: str
+    code: str | None
+    error: str | None = None
+    infrastructure_error: str | None = None
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"prompt": self.prompt, "answer": self.answer, "code": self.code, "error": self.error,
+                "infrastructure_error": self.infrastructure_error, "meta": self.meta}
+
+
+async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None]:
+    try:
+        return await backend.chat(request), None
+    except LLMError as exc:
+        return None, str(exc)
+
+
+async def choose_components(
+    backend: Backend, instance: TaskInstance, catalog: Catalog, template: str = "CI1"
+) -> Selection:
+    prompt = select_prompt(template, instance.description, catalog.menu())
+    request = ChatRequest(user_messages(prompt), "select", instance.key,
+                          gold=gold_selection(instance.required_components))
+    response, failure = await _ask(backend, request)
+    if response is None:
+        return Selection(prompt, "", (), error=failure, infrastructure_error=failure)
+    parsed = parse_components(response.content, catalog.names)
+    return Selection(prompt, response.content, parsed.names, parsed.unknown, parsed.error,
+                     meta=response.meta())
+
+
+async def generate_code(
+    backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1"
+) -> Generation:
+    prompt = code_prompt(template, instance.description, catalog.context(selection.names))
+    request = ChatRequest(user_messages(prompt), "code", instance.key,
+                          gold=gold_code(instance.reference_program))
+    response, failure = await _ask(backend, request)
+    if response is None:
+        return Generation(prompt, "", None, error=failure, infrastructure_error=failure)
+    extracted = extract_code(response.content)
+    error = extracted.error
+    if response.truncated and extracted.code is None:
+        error = f"{error} (answer truncated: done_reason 'length')"
+    return Generation(prompt, response.content, extracted.code, error, meta=response.meta())

@@ -1,0 +1,255 @@
+"""Command line: ``meceng tasks|evaluate|run``.
+
+Exit codes: 0 success, 1 the graded program failed (``evaluate``), 2 wrong usage or unknown task.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+from meceng.agents.llm import LLMSettings
+from meceng.tasks.registry import default_registry
+
+LEVELS = ("1", "2", "3a", "3b")
+
+
+def _levels(text: str) -> tuple[str, ...]:
+    levels = tuple(x.strip() for x in text.split(",") if x.strip())
+    bad = [lv for lv in levels if lv not in LEVELS]
+    if bad or not levels:
+        raise argparse.ArgumentTypeError(f"levels must be a comma-separated subset of {', '.join(LEVELS)}")
+    return levels
+
+
+def _positive_int(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError("must be >= 1")
+    return value
+
+
+def _think(text: str) -> bool | str:
+    lowered = text.lower()
+    if lowered in ("true", "on", "yes", "1"):
+        return True
+    if lowered in ("false", "off", "no", "0"):
+        return False
+    if lowered in ("low", "medium", "high"):
+        return lowered
+    raise argparse.ArgumentTypeError("think must be on/off or low/medium/high")
+
+
+def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--model", default="gold", help="model name (Ollama name, or 'gold')")
+    parser.add_argument("--backend", choices=("ollama", "gold"), default=None,
+                        help="LLM backend; default: gold for --model gold, else ollama")
+    parser.add_argument("--host", action="append", default=None,
+                        help="Ollama server URL; repeat for several servers (default http://127.0.0.1:11434)")
+    parser.add_argument("--temperature", type=float, default=0.0)
+    parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
+    parser.add_argument("--think", type=_think, default=False, help="on/off or low/medium/high")
+    parser.add_argument("--num-ctx", type=_positive_int, default=4096)
+    parser.add_argument("--num-predict", type=_positive_int, default=2048)
+    parser.add_argument("--batch-size", type=_positive_int, default=4,
+                        help="parallel requests per server (its OLLAMA_NUM_PARALLEL)")
+    parser.add_argument("--llm-timeout", type=float, default=600.0, help="seconds per LLM request")
+
+
+def add_run_arguments(parser: argparse.ArgumentParser) -> None:
+    add_llm_arguments(parser)
+    parser.add_argument("--levels", type=_levels, default=("1", "2"), help="e.g. 1,2")
+    parser.add_argument("--only", default="", help="comma-separated task slugs or ids")
+    parser.add_argument("--variations", type=_positive_int, default=3, help="parameter variations per model")
+    parser.add_argument("--seed", type=int, default=0, help="first instance seed")
+    parser.add_argument("--out", type=Path, default=Path("runs"), help="directory for run folders")
+    parser.add_argument("--name", default=None, help="run folder name (default: time stamp + model)")
+    parser.add_argument("--workers", type=_positive_int, default=None, help="parallel program executions")
+    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
+    parser.add_argument("--select-template", default="CI1")
+    parser.add_argument("--code-template", default="MBS1")
+    parser.add_argument("--no-progress", action="store_true")
+
+
+def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
+                 think: bool | str | None = None) -> LLMSettings:
+    model = model or args.model
+    backend = args.backend or ("gold" if model == "gold" else "ollama")
+    if model == "gold":
+        backend = "gold"
+    return LLMSettings(
+        model=model, backend=backend, hosts=tuple(args.host or ("http://127.0.0.1:11434",)),
+        temperature=args.temperature if temperature is None else temperature, seed=args.llm_seed,
+        think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
+        batch_size=args.batch_size, timeout_s=args.llm_timeout,
+    )
+
+
+def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = None) -> Any:
+    import os
+
+    from meceng.agents.prompts import CODE_TEMPLATES, SELECT_TEMPLATES
+    from meceng.pipeline import RunSettings
+
+    if args.select_template not in SELECT_TEMPLATES:
+        raise SystemExit(f"error: unknown --select-template {args.select_template!r}; "
+                         f"choose from {', '.join(SELECT_TEMPLATES)}")
+    if args.code_template not in CODE_TEMPLATES:
+        raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
+                         f"choose from {', '.join(CODE_TEMPLATES)}")
+    return RunSettings(
+        llm=llm, levels=args.levels, only=tuple(x.strip() for x in args.only.split(",") if x.strip()),
+        variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
+        workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
+        select_template=args.select_template, code_template=args.code_template,
+        progress=not args.no_progress,
+    )
+
+
+# ----------------------------------------------------------------------------- commands
+
+
+def cmd_tasks_list(args: argparse.Namespace) -> int:
+    registry = default_registry()
+    models = registry.select([args.level] if args.level else None)
+    if args.json:
+        print(json.dumps([{"id": m.id, "slug": m.slug, "name": m.name, "level": m.level,
+                           "components": list(m.components)} for m in models], indent=1))
+        return 0
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table("id", "level", "slug", "name")
+    for m in models:
+        table.add_row(str(m.id), m.level, m.slug, m.name)
+    Console().print(table)
+    return 0
+
+
+def _instance(args: argparse.Namespace) -> Any:
+    registry = default_registry()
+    try:
+        model = registry.get(args.slug)
+    except KeyError as exc:
+        print(f"error: {exc.args[0]}", file=sys.stderr)
+        raise SystemExit(2) from None
+    return model.instance(args.seed)
+
+
+def cmd_tasks_show(args: argparse.Namespace) -> int:
+    instance = _instance(args)
+    data = instance.to_json()
+    if args.json:
+        print(json.dumps(data, indent=1))
+        return 0
+    print(f"{instance.task_id} {instance.name} (level {instance.level}, seed {instance.seed})\n")
+    print(instance.description + "\n")
+    print("parameters: " + ", ".join(f"{k} = {v}" for k, v in instance.params.items()))
+    print("required components: " + ", ".join(instance.required_components))
+    return 0
+
+
+def cmd_tasks_reference(args: argparse.Namespace) -> int:
+    print(_instance(args).reference_program, end="")
+    return 0
+
+
+def cmd_evaluate(args: argparse.Namespace) -> int:
+    from meceng.pipeline import evaluate_program
+    from meceng.tools.executor import ExecutionLimits
+
+    instance = _instance(args)
+    try:
+        code = args.code.read_text()
+    except OSError as exc:
+        print(f"error: cannot read {args.code}: {exc.strerror}", file=sys.stderr)
+        return 2
+    selected = tuple(x.strip() for x in args.components.split(",") if x.strip()) if args.components else None
+    verdict, candidate, _ = asyncio.run(
+        evaluate_program(instance, code, selected, limits=ExecutionLimits(timeout_s=args.timeout)))
+    data = {"task": instance.slug, "seed": instance.seed, **verdict.to_json(), "execution": candidate.summary()}
+    if args.json:
+        print(json.dumps(data, indent=1, default=str))
+    else:
+        for stage in verdict.stages:
+            mark = {True: "pass", False: "FAIL", None: " -- "}[stage.passed]
+            print(f"[{mark}] {stage.name:<22} {stage.detail}")
+        print(f"overall: {'success' if verdict.overall else 'failure'}"
+              + (f" (first failure: {verdict.first_failure})" if verdict.first_failure else ""))
+        if verdict.error_categories:
+            print("error categories: " + ", ".join(verdict.error_categories))
+        if verdict.infrastructure_error:
+            print(f"infrastructure error: {verdict.infrastructure_error}")
+    return 0 if verdict.overall else 1
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from meceng.logs import configure_logging
+    from meceng.pipeline import run_benchmark
+
+    settings = run_settings(args, llm_settings(args))
+    configure_logging(None, console=True)
+    path = asyncio.run(run_benchmark(settings))
+    configure_logging(None)
+    print_summary(path)
+    return 0
+
+
+def print_summary(run_json: Path) -> None:
+    run = json.loads(run_json.read_text())
+    summary = run["summary"]
+    rates = summary["rates"]
+    line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in rates.items() if v is not None)
+    print(f"{run_json}\n{summary['counted']} tasks graded, {summary['infrastructure_failures']} infrastructure "
+          f"failures\n{line}")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="meceng", description="MecEng: LLMs building multibody models")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    tasks = sub.add_parser("tasks", help="list, show and print task models")
+    tsub = tasks.add_subparsers(dest="tasks_command", required=True)
+    p = tsub.add_parser("list", help="list task models")
+    p.add_argument("--level", choices=LEVELS)
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=cmd_tasks_list)
+    for name, func, helptext in (("show", cmd_tasks_show, "show one task instance"),
+                                 ("reference", cmd_tasks_reference, "print the ground-truth program")):
+        p = tsub.add_parser(name, help=helptext)
+        p.add_argument("slug", help="task slug or paper id")
+        p.add_argument("--seed", type=int, default=0)
+        if name == "show":
+            p.add_argument("--json", action="store_true")
+        p.set_defaults(func=func)
+
+    p = sub.add_parser("evaluate", help="grade a program against a task instance")
+    p.add_argument("slug")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--code", type=Path, required=True, help="the Python program to grade")
+    p.add_argument("--components", default=None, help="comma-separated chosen components (optional)")
+    p.add_argument("--timeout", type=float, default=60.0)
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=cmd_evaluate)
+
+    p = sub.add_parser("run", help="run the benchmark for one model")
+    add_run_arguments(p)
+    p.set_defaults(func=cmd_run)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

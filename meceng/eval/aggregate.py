@@ -1,0 +1,83 @@
+"""Aggregation of task records into the run summary (rates per stage and level, statistics).
+
+Works on the JSON task records, so a summary can be recomputed from a journal or a run.json.
+Tasks that failed for infrastructure reasons (server down, reference broken) are counted apart
+and left out of the model's rates: they say nothing about the model.
+"""
+
+from __future__ import annotations
+
+from collections import Counter, defaultdict
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import numpy as np
+
+from meceng.eval.categories import CATEGORIES
+
+
+def _percentile(values: Sequence[float], q: float) -> float | None:
+    return float(np.percentile(values, q)) if values else None
+
+
+def _stats(values: Sequence[float]) -> dict[str, float | None]:
+    if not values:
+        return {"n": 0, "mean": None, "median": None, "p95": None, "max": None, "sum": 0.0}
+    arr = np.asarray(values, dtype=float)
+    return {"n": len(arr), "mean": float(arr.mean()), "median": float(np.median(arr)),
+            "p95": float(np.percentile(arr, 95)), "max": float(arr.max()), "sum": float(arr.sum())}
+
+
+def stage_rates(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
+    records = list(records)
+    counted = [r for r in records if r.get("first_failure") != "infrastructure"]
+    passed: Counter[str] = Counter()
+    order: list[str] = []
+    for r in counted:
+        for s in r.get("stages", []):
+            if s["name"] not in order:
+                order.append(s["name"])
+            if s["passed"]:
+                passed[s["name"]] += 1
+    n = len(counted)
+    rates = {name: (passed[name] / n if n else None) for name in order}
+    overall = sum(1 for r in counted if r.get("overall"))
+    rates["overall"] = overall / n if n else None
+    return {"tasks": len(records), "counted": n, "infrastructure_failures": len(records) - n,
+            "passed": {**{k: passed[k] for k in order}, "overall": overall}, "rates": rates}
+
+
+def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
+    """The ``summary`` block of run.json."""
+    records = list(records)
+    by_level: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    by_task: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for r in records:
+        by_level[str(r["level"])].append(r)
+        by_task[r["slug"]].append(r)
+    categories: Counter[str] = Counter()
+    for r in records:
+        categories.update(set(r.get("error_categories", [])))
+    first_failures = Counter(r.get("first_failure") or "none" for r in records)
+    calls = [c for r in records for c in (r.get("selection", {}).get("meta"), r.get("generation", {}).get("meta"))
+             if c]
+    truncated = sum(1 for c in calls if c.get("truncated"))
+    return {
+        **stage_rates(records),
+        "levels": {level: stage_rates(rs) for level, rs in sorted(by_level.items())},
+        "tasks_by_model": {slug: {"n": len(rs), "overall": sum(1 for r in rs if r.get("overall"))}
+                           for slug, rs in by_task.items()},
+        "first_failures": dict(first_failures),
+        "error_categories": {c: categories.get(c, 0) for c in CATEGORIES},
+        "tokens": {
+            "prompt": _stats([c.get("prompt_tokens", 0) for c in calls]),
+            "completion": _stats([c.get("completion_tokens", 0) for c in calls]),
+            "context_used_p95": _percentile([c.get("context_used", 0) for c in calls], 95),
+            "truncated_answers": truncated,
+        },
+        "timing": {
+            "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
+            "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),
+            "evaluation_s": _stats([r["timing"]["evaluation_s"] for r in records if "timing" in r]),
+        },
+    }

@@ -1,0 +1,156 @@
+"""The level 1-2 evaluation chain in the paper's order (Fig. 6a), as one pure function.
+
+choose components -> finished assemble -> topology match -> graph content match -> solver success
+-> solution match -> overall. Finished assemble gates everything after it, topology gates graph
+content, and solver success gates the solution match; a stage that was not evaluated because
+its gate failed is recorded with ``passed = None`` and counts as not passed in the rates.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from meceng.eval.components import check_components
+from meceng.eval.graph import GraphTolerance, compare_graphs
+from meceng.eval.solution import compare_solutions
+from meceng.tools.executor import Execution
+
+RIGID_STAGES = (
+    "choose_components",
+    "finished_assemble",
+    "topology_match",
+    "graph_content_match",
+    "solver_success",
+    "solution_match",
+)
+
+
+@dataclass(frozen=True)
+class StageResult:
+    name: str
+    passed: bool | None
+    detail: str = ""
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "passed": self.passed, "detail": self.detail}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The graded outcome of one task: every stage in order, the first failure, categories."""
+
+    stages: tuple[StageResult, ...]
+    error_categories: tuple[str, ...] = ()
+    differences: tuple[dict[str, Any], ...] = ()
+    solution_norm: float | None = None
+    infrastructure_error: str | None = None
+
+    @property
+    def overall(self) -> bool:
+        if self.infrastructure_error is not None or not self.stages:
+            return False
+        return all(s.passed for s in self.stages if not _not_applicable(s))
+
+    @property
+    def first_failure(self) -> str | None:
+        if self.infrastructure_error is not None:
+            return "infrastructure"
+        for stage in self.stages:
+            if stage.passed is False:
+                return stage.name
+        return None
+
+    def stage(self, name: str) -> StageResult:
+        for s in self.stages:
+            if s.name == name:
+                return s
+        raise KeyError(name)
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "stages": [s.to_json() for s in self.stages],
+            "overall": self.overall,
+            "first_failure": self.first_failure,
+            "error_categories": list(self.error_categories),
+            "differences": [_jsonable_difference(d) for d in self.differences[:50]],
+            "solution_norm": self.solution_norm,
+            "infrastructure_error": self.infrastructure_error,
+        }
+
+
+@dataclass(frozen=True)
+class Tolerances:
+    solution: float = 1e-5
+    graph: GraphTolerance = field(default_factory=GraphTolerance)
+
+
+def evaluate_rigid(
+    candidate: Execution,
+    reference: Execution,
+    *,
+    end_time: float,
+    steps: int,
+    selected: Iterable[str] | None,
+    required: Iterable[str],
+    dependencies: Mapping[str, Iterable[str]],
+    tolerances: Tolerances | None = None,
+) -> Verdict:
+    """Grade a candidate execution against the reference execution of the same task instance.
+
+    ``selected`` None means no component selection took place (grading a program directly);
+    that stage is then recorded as not applicable and does not count against overall.
+    """
+    tol = tolerances or Tolerances()
+    if not reference.solved or reference.items is None or reference.trajectory is None:
+        return Verdict(
+            stages=(),
+            infrastructure_error=f"reference program failed: {reference.error or reference.stage}",
+        )
+    stages: list[StageResult] = []
+    if selected is None:
+        stages.append(StageResult("choose_components", None, "not applicable: no component selection"))
+    else:
+        check = check_components(selected, required, dependencies)
+        stages.append(StageResult("choose_components", check.passed, check.detail))
+
+    if not candidate.finished_assemble or candidate.items is None:
+        reason = candidate.error or f"stopped at stage '{candidate.stage}'"
+        stages.append(StageResult("finished_assemble", False, reason))
+        stages += [StageResult(n, None, "not evaluated: assemble did not finish") for n in RIGID_STAGES[2:]]
+        return Verdict(tuple(stages))
+    stages.append(StageResult("finished_assemble", True, "mbs.Assemble() finished"))
+
+    graph = compare_graphs(candidate.items, reference.items, tol.graph)
+    topology_ok = graph.counts_match and bool(graph.topology_match)
+    stages.append(StageResult("topology_match", topology_ok, graph.detail if not topology_ok else
+                              "system graphs are isomorphic by item type"))
+    if topology_ok:
+        stages.append(StageResult("graph_content_match", bool(graph.content_match), graph.detail))
+    else:
+        stages.append(StageResult("graph_content_match", None, "not evaluated: topology differs"))
+
+    norm = None
+    if candidate.solved and candidate.trajectory is not None and candidate.times is not None:
+        stages.append(StageResult("solver_success", True, "simulation finished"))
+        solution = compare_solutions(candidate.times, candidate.trajectory, reference.times,
+                                     reference.trajectory, end_time, steps, tol.solution)
+        stages.append(StageResult("solution_match", solution.passed, solution.detail))
+        norm = solution.norm
+    else:
+        stages.append(StageResult("solver_success", False, candidate.error or f"stage '{candidate.stage}'"))
+        stages.append(StageResult("solution_match", None, "not evaluated: solver failed"))
+    return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm)
+
+
+def _not_applicable(stage: StageResult) -> bool:
+    return stage.name == "choose_components" and stage.passed is None
+
+
+def _jsonable_difference(d: dict[str, Any]) -> dict[str, Any]:
+    out = dict(d)
+    for key in ("value", "expected"):
+        text = repr(out.get(key))
+        out[key] = out.get(key) if len(text) <= 200 else text[:197] + "..."
+    return out

@@ -1,0 +1,343 @@
+"""The asyncio pipeline: task instances -> LLM steps -> isolated execution -> verdicts -> records.
+
+Per task instance (paper Fig. 2): choose components, build the context, generate the program,
+run it in isolation, run the ground truth the same way (once per instance, cached), grade. The
+instances run as concurrent coroutines: LLM calls are bounded per endpoint by the backend's
+scheduler and executions by a worker semaphore, so inference of one task overlaps the evaluation
+of another and a run costs about max(LLM time, evaluation time). Every finished task is appended
+to the JSONL journal at once; one task's failure is recorded and never stops the run.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import datetime as dt
+import json
+import os
+import platform
+import re
+import time
+import traceback
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import structlog
+
+from meceng.agents.catalog import Catalog, rigid_catalog
+from meceng.agents.llm import Backend, LLMSettings, make_backend
+from meceng.agents.steps import Generation, Selection, choose_components, generate_code
+from meceng.eval.aggregate import summarize
+from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.tasks.base import TaskInstance, program_header
+from meceng.tasks.registry import TaskRegistry, default_registry
+from meceng.tools.executor import Execution, ExecutionLimits, execute
+
+log = structlog.get_logger("meceng.pipeline")
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """Everything that defines a run; written to run.json as given."""
+
+    llm: LLMSettings = field(default_factory=LLMSettings)
+    levels: tuple[str, ...] = ("1", "2")
+    only: tuple[str, ...] = ()
+    variations: int = 3
+    seed: int = 0
+    out: Path = Path("runs")
+    run_name: str | None = None
+    workers: int = max(1, os.cpu_count() or 1)
+    exec_timeout_s: float = 60.0
+    select_template: str = "CI1"
+    code_template: str = "MBS1"
+    solution_tolerance: float = 1e-5
+    progress: bool = True
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "llm": self.llm.to_json(),
+            "pipeline": {
+                "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
+                "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
+                "solution_tolerance": self.solution_tolerance,
+            },
+            "prompt": {"select_template": self.select_template, "code_template": self.code_template},
+        }
+
+
+class ReferenceCache:
+    """Ground-truth executions, run once per task instance and shared by everyone who asks."""
+
+    def __init__(self, run: Callable[[TaskInstance], Any]) -> None:
+        self._run = run
+        self._tasks: dict[str, asyncio.Task[Execution]] = {}
+
+    async def get(self, instance: TaskInstance) -> Execution:
+        task = self._tasks.get(instance.key)
+        if task is None:
+            task = asyncio.ensure_future(self._run(instance))
+            self._tasks[instance.key] = task
+        return await asyncio.shield(task)
+
+
+class Evaluator:
+    """Runs candidate and reference programs in isolation (bounded by ``workers``) and grades."""
+
+    def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog) -> None:
+        self.slots = asyncio.Semaphore(workers)
+        self.limits = limits
+        self.tolerances = tolerances
+        self.catalog = catalog
+        self.references = ReferenceCache(self._run_reference)
+
+    async def _execute(self, program: str, instance: TaskInstance, check: bool) -> Execution:
+        async with self.slots:
+            return await execute(program, instance.sim.block(), self.limits, check=check)
+
+    async def _run_reference(self, instance: TaskInstance) -> Execution:
+        return await self._execute(instance.reference_program, instance, check=False)
+
+    async def evaluate(
+        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None
+    ) -> tuple[Verdict, Execution, Execution]:
+        reference_task = asyncio.ensure_future(self.references.get(instance))
+        if code is None:
+            candidate = Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
+        else:
+            candidate = await self._execute(code, instance, check=True)
+        reference = await reference_task
+        verdict = evaluate_rigid(
+            candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
+            selected=selected, required=instance.required_components,
+            dependencies=self.catalog.dependency_map(), tolerances=self.tolerances,
+        )
+        return verdict, candidate, reference
+
+
+def _safe_name(text: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "-", text).strip("-") or "run"
+
+
+def versions() -> dict[str, str]:
+    import exudyn
+    import networkx
+    import numpy
+
+    out = {"python": platform.python_version(), "exudyn": exudyn.__version__, "numpy": numpy.__version__,
+           "networkx": networkx.__version__, "platform": platform.platform()}
+    try:
+        import ngsolve
+
+        out["ngsolve"] = ngsolve.__version__
+    except Exception:
+        pass
+    try:
+        from importlib.metadata import version
+
+        out["meceng"] = version("meceng")
+        out["ollama"] = version("ollama")
+    except Exception:
+        pass
+    return out
+
+
+def gpu_telemetry() -> list[dict[str, str]]:
+    """nvidia-smi readings where a GPU exists; empty elsewhere."""
+    import shutil
+    import subprocess
+
+    if shutil.which("nvidia-smi") is None:
+        return []
+    try:
+        out = subprocess.run(
+            ["nvidia-smi", "--query-gpu=name,memory.total,memory.used,utilization.gpu,driver_version",
+             "--format=csv,noheader"], capture_output=True, text=True, timeout=10, check=True).stdout
+    except (OSError, subprocess.SubprocessError):
+        return []
+    keys = ("name", "memory_total", "memory_used", "utilization", "driver")
+    return [dict(zip(keys, (p.strip() for p in line.split(",")), strict=False)) for line in out.splitlines()]
+
+
+class RunWriter:
+    """The run directory: journal.jsonl as tasks finish, programs/, and run.json at the end."""
+
+    def __init__(self, run_dir: Path) -> None:
+        self.run_dir = run_dir
+        (run_dir / "programs").mkdir(parents=True, exist_ok=True)
+        self.journal_path = run_dir / "journal.jsonl"
+        self._journal = open(self.journal_path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
+
+    def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
+        folder = self.run_dir / "programs" / instance.slug
+        folder.mkdir(parents=True, exist_ok=True)
+        reference = folder / f"seed{instance.seed}_reference.py"
+        reference.write_text(instance.reference_program)
+        files = {"reference": str(reference.relative_to(self.run_dir))}
+        if code is not None:
+            generated = folder / f"seed{instance.seed}_generated.py"
+            header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
+                                    instance.description)
+            generated.write_text(f"{header}\n{code}")
+            files["generated"] = str(generated.relative_to(self.run_dir))
+        return files
+
+    def append(self, record: dict[str, Any]) -> None:
+        self._journal.write(json.dumps(record, default=str) + "\n")
+        self._journal.flush()
+        os.fsync(self._journal.fileno())
+
+    def finish(self, settings: RunSettings, records: list[dict[str, Any]], started: float, wall: float) -> Path:
+        self._journal.close()
+        run = {
+            "settings": settings.to_json(),
+            "versions": versions(),
+            "gpu": gpu_telemetry(),
+            "started": dt.datetime.fromtimestamp(started, dt.UTC).isoformat(),
+            "wall_time_s": wall,
+            "summary": summarize(records),
+            "tasks": records,
+        }
+        path = self.run_dir / "run.json"
+        tmp = path.with_suffix(".json.tmp")
+        tmp.write_text(json.dumps(run, indent=1, default=str))
+        os.replace(tmp, path)
+        return path
+
+
+def task_record(
+    instance: TaskInstance,
+    selection: Selection,
+    generation: Generation,
+    verdict: Verdict,
+    candidate: Execution,
+    reference: Execution,
+    timing: dict[str, float],
+    files: dict[str, str],
+) -> dict[str, Any]:
+    infra = selection.infrastructure_error or generation.infrastructure_error or verdict.infrastructure_error
+    verdict_json = verdict.to_json()
+    if infra and not verdict.infrastructure_error:
+        verdict_json.update(overall=False, first_failure="infrastructure")
+    return {
+        "id": instance.task_id,
+        "slug": instance.slug,
+        "name": instance.name,
+        "level": instance.level,
+        "seed": instance.seed,
+        "params": instance.params,
+        "description": instance.description,
+        "required_components": list(instance.required_components),
+        **verdict_json,
+        "infrastructure_error": infra,
+        "selection": selection.to_json(),
+        "generation": generation.to_json(),
+        "execution": candidate.summary(),
+        "reference_execution": reference.summary(),
+        "timing": {k: round(v, 4) for k, v in timing.items()},
+        "tokens": {
+            "prompt": sum(m.get("prompt_tokens", 0) for m in (selection.meta, generation.meta)),
+            "completion": sum(m.get("completion_tokens", 0) for m in (selection.meta, generation.meta)),
+        },
+        "files": files,
+    }
+
+
+async def run_task(
+    instance: TaskInstance, backend: Backend, catalog: Catalog, evaluator: Evaluator, settings: RunSettings,
+    writer: RunWriter,
+) -> dict[str, Any]:
+    t0 = time.perf_counter()
+    selection = await choose_components(backend, instance, catalog, settings.select_template)
+    generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
+    t_llm = time.perf_counter() - t0
+    selected = selection.names if selection.infrastructure_error is None else ()
+    verdict, candidate, reference = await evaluator.evaluate(instance, generation.code, selected, generation.error)
+    t_total = time.perf_counter() - t0
+    files = writer.save_programs(instance, generation.code)
+    return task_record(instance, selection, generation, verdict, candidate, reference,
+                       {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total}, files)
+
+
+def _failed_record(instance: TaskInstance, exc: BaseException) -> dict[str, Any]:
+    """A record for a task whose processing raised: recorded, never fatal to the run."""
+    text = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__))[-3000:]
+    return {
+        "id": instance.task_id, "slug": instance.slug, "name": instance.name, "level": instance.level,
+        "seed": instance.seed, "params": instance.params, "description": instance.description,
+        "required_components": list(instance.required_components), "stages": [], "overall": False,
+        "first_failure": "infrastructure", "error_categories": [],
+        "infrastructure_error": f"pipeline error: {type(exc).__name__}: {exc}", "traceback": text,
+        "timing": {"llm_s": 0.0, "evaluation_s": 0.0, "total_s": 0.0},
+    }
+
+
+async def run_benchmark(
+    settings: RunSettings,
+    registry: TaskRegistry | None = None,
+    catalog: Catalog | None = None,
+    backend: Backend | None = None,
+) -> Path:
+    """Run every selected task instance and write the run directory; returns run.json's path."""
+    registry = registry or default_registry()
+    catalog = catalog or rigid_catalog()
+    models = registry.select(settings.levels, settings.only or None)
+    if not models:
+        raise ValueError(f"no task models for levels {settings.levels} / only {settings.only}")
+    instances = registry.instances(models, settings.seed, settings.variations)
+    started = time.time()
+    stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
+    run_dir = settings.out / (settings.run_name or f"{stamp}_{_safe_name(settings.llm.model)}")
+    run_dir.mkdir(parents=True, exist_ok=True)
+    writer = RunWriter(run_dir)
+    own_backend = backend is None
+    backend = backend or make_backend(settings.llm)
+    evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
+                          Tolerances(solution=settings.solution_tolerance), catalog)
+    # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
+    window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) + settings.workers + 2)
+    records: list[dict[str, Any]] = []
+    log.info("run started", run_dir=str(run_dir), tasks=len(instances), model=settings.llm.model)
+
+    from meceng.progress import progress_bar
+
+    t0 = time.perf_counter()
+    with progress_bar(len(instances), f"{settings.llm.model}", enabled=settings.progress) as advance:
+
+        async def one(instance: TaskInstance) -> None:
+            async with window:
+                try:
+                    record = await run_task(instance, backend, catalog, evaluator, settings, writer)
+                except Exception as exc:
+                    log.error("task failed", task=instance.key, error=str(exc))
+                    record = _failed_record(instance, exc)
+            writer.append(record)
+            records.append(record)
+            log.info("task done", task=instance.key, overall=record["overall"],
+                     first_failure=record["first_failure"])
+            advance(record["overall"])
+
+        try:
+            await asyncio.gather(*(one(i) for i in instances))
+        finally:
+            if own_backend:
+                await backend.aclose()
+    order = {inst.key: k for k, inst in enumerate(instances)}
+    records.sort(key=lambda r: order.get(f"{r['slug']}@{r['seed']}", 0))
+    path = writer.finish(settings, records, started, time.perf_counter() - t0)
+    log.info("run finished", run_json=str(path))
+    return path
+
+
+async def evaluate_program(
+    instance: TaskInstance,
+    code: str,
+    selected: tuple[str, ...] | None = None,
+    catalog: Catalog | None = None,
+    limits: ExecutionLimits | None = None,
+) -> tuple[Verdict, Execution, Execution]:
+    """Grade one program against the task instance, as if an LLM had written it."""
+    catalog = catalog or rigid_catalog()
+    evaluator = Evaluator(2, limits or ExecutionLimits(), Tolerances(), catalog)
+    return await evaluator.evaluate(instance, code, selected, None)

@@ -1,0 +1,249 @@
+"""Runs one program in its own child process and reads back what the harness recorded.
+
+Every program gets a fresh scratch directory (its cwd), its own session / process group (so a
+timeout kills the program and every process it started), resource limits, a stripped
+environment and bounded capture of stdout/stderr. A segfault or a kill is a verdict, not a crash
+of the run: the stage the program had reached is read from the harness's ``stage.log``.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import json
+import os
+import resource
+import shutil
+import signal
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from meceng.tools.safety import check_program
+
+#: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
+ENV_KEEP = ("PATH", "HOME", "LANG", "LC_ALL", "PYTHONPATH", "VIRTUAL_ENV", "TMPDIR", "SYSTEMROOT")
+
+
+@dataclass(frozen=True)
+class ExecutionLimits:
+    """Hard limits of one program run."""
+
+    timeout_s: float = 60.0
+    memory_bytes: int = 6 * 1024**3
+    file_bytes: int = 256 * 1024**2
+    output_bytes: int = 64 * 1024
+    keep_scratch: bool = False
+
+
+@dataclass(frozen=True)
+class Execution:
+    """What running one program produced.
+
+    ``stage`` is the last stage reached: refused (static check), started, reached_assemble,
+    finished_assemble, solver_started, solved. ``error_kind`` tells infrastructure from program
+    faults: safety, exception, timeout, crash, no_result.
+    """
+
+    stage: str
+    error: str | None = None
+    error_kind: str | None = None
+    items: dict[str, list[dict[str, Any]]] | None = None
+    system: dict[str, Any] = field(default_factory=dict)
+    times: np.ndarray | None = None
+    trajectory: np.ndarray | None = None
+    warnings: tuple[str, ...] = ()
+    stdout_tail: str = ""
+    stderr_tail: str = ""
+    returncode: int | None = None
+    wall_time: float = 0.0
+    solve_time: float | None = None
+
+    @property
+    def finished_assemble(self) -> bool:
+        return self.stage in ("finished_assemble", "solver_started", "solved")
+
+    @property
+    def solved(self) -> bool:
+        return self.stage == "solved" and self.error is None
+
+    def summary(self) -> dict[str, Any]:
+        """The JSON-friendly part, for the task record."""
+        return {
+            "stage": self.stage,
+            "error": self.error,
+            "error_kind": self.error_kind,
+            "warnings": list(self.warnings),
+            "returncode": self.returncode,
+            "wall_time": round(self.wall_time, 4),
+            "solve_time": None if self.solve_time is None else round(self.solve_time, 4),
+            "steps": None if self.times is None else len(self.times),
+            "system": self.system,
+            "stderr_tail": self.stderr_tail[-2000:],
+        }
+
+
+def child_env() -> dict[str, str]:
+    env = {k: os.environ[k] for k in ENV_KEEP if k in os.environ}
+    env.update(
+        MPLBACKEND="Agg",
+        OMP_NUM_THREADS="1",
+        OPENBLAS_NUM_THREADS="1",
+        MKL_NUM_THREADS="1",
+        PYTHONDONTWRITEBYTECODE="1",
+        PYTHONUNBUFFERED="1",
+    )
+    return env
+
+
+def _limit_child(limits: ExecutionLimits) -> None:
+    """Runs in the child between fork and exec: resource limits only (session via Popen)."""
+    resource.setrlimit(resource.RLIMIT_AS, (limits.memory_bytes, limits.memory_bytes))
+    cpu = int(limits.timeout_s) + 5
+    resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
+    resource.setrlimit(resource.RLIMIT_FSIZE, (limits.file_bytes, limits.file_bytes))
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+
+
+async def _read_bounded(stream: asyncio.StreamReader | None, limit: int) -> bytes:
+    """Read everything, keep the first and last ``limit // 2`` bytes."""
+    if stream is None:
+        return b""
+    head = bytearray()
+    tail = bytearray()
+    half = max(limit // 2, 1)
+    dropped = 0
+    while chunk := await stream.read(65536):
+        if len(head) < half:
+            take = half - len(head)
+            head += chunk[:take]
+            chunk = chunk[take:]
+        tail += chunk
+        if len(tail) > half:
+            dropped += len(tail) - half
+            del tail[: len(tail) - half]
+    if dropped:
+        return bytes(head) + f"\n[... {dropped} bytes dropped ...]\n".encode() + bytes(tail)
+    return bytes(head + tail)
+
+
+def _kill_group(pid: int) -> None:
+    with contextlib.suppress(ProcessLookupError, PermissionError):
+        os.killpg(pid, signal.SIGKILL)
+
+
+async def execute(
+    program: str,
+    sim_block: str,
+    limits: ExecutionLimits | None = None,
+    scratch_root: Path | None = None,
+    check: bool = True,
+) -> Execution:
+    """Statically check, then run ``program`` with ``sim_block`` as its solver block."""
+    limits = limits or ExecutionLimits()
+    if check:
+        verdict = check_program(program)
+        if not verdict:
+            where = f" (line {verdict.line})" if verdict.line else ""
+            return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
+    scratch = Path(tempfile.mkdtemp(prefix="meceng-", dir=scratch_root))
+    try:
+        return await _run_in(scratch, program, sim_block, limits)
+    finally:
+        if not limits.keep_scratch:
+            shutil.rmtree(scratch, ignore_errors=True)
+
+
+async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> Execution:
+    job = scratch / "job.json"
+    job.write_text(json.dumps({"program": program, "sim_block": sim_block}))
+    (scratch / "program.py").write_text(program)
+    t0 = time.perf_counter()
+    proc = await asyncio.create_subprocess_exec(
+        sys.executable,
+        "-m",
+        "meceng.tools.runner",
+        str(job),
+        cwd=scratch,
+        env=child_env(),
+        stdin=asyncio.subprocess.DEVNULL,
+        stdout=asyncio.subprocess.PIPE,
+        stderr=asyncio.subprocess.PIPE,
+        start_new_session=True,
+        preexec_fn=lambda: _limit_child(limits),
+    )
+    readers = asyncio.gather(
+        _read_bounded(proc.stdout, limits.output_bytes), _read_bounded(proc.stderr, limits.output_bytes)
+    )
+    timed_out = False
+    try:
+        await asyncio.wait_for(proc.wait(), timeout=limits.timeout_s)
+    except TimeoutError:
+        timed_out = True
+    finally:
+        # the program's children die with it, whether it ended or not
+        _kill_group(proc.pid)
+        if proc.returncode is None:
+            await proc.wait()
+    try:
+        stdout, stderr = await asyncio.wait_for(readers, timeout=5.0)
+    except TimeoutError:
+        stdout, stderr = b"", b"[output not collected: a child kept the pipes open]"
+    wall = time.perf_counter() - t0
+    return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits)
+
+
+def _collect(
+    scratch: Path,
+    returncode: int | None,
+    timed_out: bool,
+    stdout: bytes,
+    stderr: bytes,
+    wall: float,
+    limits: ExecutionLimits,
+) -> Execution:
+    out = stdout.decode(errors="replace")
+    err = stderr.decode(errors="replace")
+    stage_log = scratch / "stage.log"
+    stages = stage_log.read_text().split() if stage_log.exists() else []
+    last_stage = stages[-1] if stages else "started"
+    common = {"stdout_tail": out[-4000:], "stderr_tail": err[-4000:], "returncode": returncode,
+              "wall_time": wall}
+    if timed_out:
+        return Execution(stage=last_stage, error=f"timeout after {limits.timeout_s:g} s (process group killed)",
+                         error_kind="timeout", **common)
+    result_path = scratch / "result.json"
+    if not result_path.exists():
+        if returncode is not None and returncode < 0:
+            name = signal.Signals(-returncode).name if -returncode in signal.valid_signals() else str(-returncode)
+            error = f"program crashed with signal {name}"
+        else:
+            error = f"program ended without a result (exit code {returncode})"
+        return Execution(stage=last_stage, error=error, error_kind="crash", **common)
+    try:
+        result = json.loads(result_path.read_text())
+    except (OSError, ValueError) as exc:
+        return Execution(stage=last_stage, error=f"unreadable result: {exc}", error_kind="no_result", **common)
+    times = trajectory = None
+    traj_path = scratch / "trajectory.npy"
+    if traj_path.exists():
+        data = np.load(traj_path)
+        times, trajectory = data[:, 0], data[:, 1:]
+    error = result.get("error")
+    return Execution(
+        stage=str(result.get("stage", last_stage)),
+        error=error,
+        error_kind="exception" if error else None,
+        items=result.get("items"),
+        system=result.get("system") or {},
+        times=times,
+        trajectory=trajectory,
+        warnings=tuple(result.get("warnings", ())),
+        solve_time=result.get("solve_time"),
+        **common,
+    )

@@ -1,0 +1,278 @@
+"""The child side of the executor: runs one program under the Exudyn harness.
+
+Invoked as ``python -m meceng.tools.runner JOB.json`` in a fresh scratch directory. The harness
+patches Exudyn before the program runs:
+
+* ``MainSystem.Assemble`` records the stages *reached assemble* / *finished assemble* and
+  remembers the system;
+* every solver call of the program (``mbs.SolveDynamic``, ``exu.SolveDynamic``, static solves)
+  hands control back to the harness instead of solving, so the program's own solver settings
+  never take effect: the ground truth's simulation block is run instead, on the same system —
+  this is how the paper's "solver block injected from the ground truth" is done without
+  rewriting text;
+* renderers and viewers become no-ops (headless they abort the process);
+* a post-step hook records ``q_ref + q`` of all ODE2 coordinates at every step.
+
+Progress is appended to ``stage.log`` as it happens, so a crash (segfault, kill) still tells how
+far the program got. The result goes to ``result.json`` and ``trajectory.npy``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+import traceback
+from pathlib import Path
+from typing import Any
+
+STAGES = ("started", "reached_assemble", "finished_assemble", "solver_started", "solved")
+
+
+class HandOver(BaseException):
+    """Raised at the program's solver call; BaseException so ``except Exception`` can't eat it."""
+
+
+class Harness:
+    def __init__(self, workdir: Path) -> None:
+        self.workdir = workdir
+        self.stage_log = open(workdir / "stage.log", "a", buffering=1)  # noqa: SIM115
+        self.stage = "started"
+        self.mbs: Any = None
+        self.user_post_step: dict[int, Any] = {}
+        self.warnings: list[str] = []
+        self.rows: list[tuple[float, Any]] = []
+        self.mark("started")
+
+    def mark(self, stage: str) -> None:
+        self.stage = stage
+        self.stage_log.write(stage + "\n")
+
+    def install(self) -> None:
+        import exudyn as exu
+
+        main_system = exu.MainSystem
+        original_assemble = main_system.Assemble
+        self._original_set_post = main_system.SetPostStepUserFunction
+        harness = self
+
+        def assemble(mbs: Any, *args: Any, **kwargs: Any) -> Any:
+            if harness.stage == "started":
+                harness.mark("reached_assemble")
+            result = original_assemble(mbs, *args, **kwargs)
+            harness.mbs = mbs
+            if harness.stage in ("started", "reached_assemble"):
+                harness.mark("finished_assemble")
+            return result
+
+        def hand_over(*args: Any, **kwargs: Any) -> Any:
+            system = args[0] if args and isinstance(args[0], main_system) else kwargs.get("mbs")
+            if system is not None:
+                harness.mbs = system
+            raise HandOver
+
+        def set_post_step(mbs: Any, function: Any) -> Any:
+            harness.user_post_step[id(mbs)] = function
+            return None
+
+        def noop(*args: Any, **kwargs: Any) -> Any:
+            return None
+
+        main_system.Assemble = assemble
+        main_system.SetPostStepUserFunction = set_post_step
+        import exudyn.solver as solver
+
+        targets: list[Any] = [main_system, exu, solver]
+        try:
+            import exudyn.utilities as utilities
+
+            targets.append(utilities)
+        except Exception:
+            pass
+        self._solver_patches: list[tuple[Any, str, Any]] = []
+        for target in targets:
+            for name in ("SolveDynamic", "SolveStatic"):
+                if hasattr(target, name):
+                    self._solver_patches.append((target, name, getattr(target, name)))
+                    setattr(target, name, hand_over)
+        for name in ("StartRenderer", "StopRenderer", "DoRendererIdleTasks"):
+            setattr(exu, name, noop)
+        for name in ("SolutionViewer", "PlotSensor", "DrawSystemGraph"):
+            if hasattr(main_system, name):
+                setattr(main_system, name, noop)
+        try:
+            import exudyn.interactive as interactive
+
+            interactive.SolutionViewer = noop
+        except Exception:
+            pass
+
+    def solve(self, sim_block: str, namespace: dict[str, Any]) -> None:
+        """Run the ground truth's simulation block on the program's assembled system."""
+        import exudyn
+        import numpy as np
+
+        mbs = self.mbs
+        user_post = self.user_post_step.get(id(mbs))
+
+        def record(system: Any, t: float) -> bool:
+            self.rows.append((t, np.array(system.systemData.GetODE2CoordinatesTotal())))
+            if user_post is not None:
+                return bool(user_post(system, t))
+            return True
+
+        for target, name, original in self._solver_patches:
+            setattr(target, name, original)
+        self._original_set_post(mbs, record)
+        namespace["mbs"] = mbs
+        namespace["exu"] = exudyn
+        self.mark("solver_started")
+        exec(compile(sim_block, "<simulation block>", "exec"), namespace)
+        self.mark("solved")
+
+
+# ----------------------------------------------------------------------------- capture
+
+
+REF_KEYS = ("Number", "Numbers")
+
+
+def to_jsonable(value: Any) -> Any:
+    """Item dict values to JSON: arrays to lists, index types to int, callables to a marker."""
+    import numpy as np
+
+    if callable(value) and not isinstance(value, type):
+        return "<function>"
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, bool | int | float | str) or value is None:
+        return value
+    if isinstance(value, list | tuple):
+        return [to_jsonable(v) for v in value]
+    if isinstance(value, dict):
+        return {str(k): to_jsonable(v) for k, v in value.items()}
+    try:
+        return int(value)  # NodeIndex, ObjectIndex, MarkerIndex, ...
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def capture_items(mbs: Any) -> dict[str, list[dict[str, Any]]]:
+    """Every item of the system as a plain dict, without visualization ('V*') entries."""
+    items: dict[str, list[dict[str, Any]]] = {}
+    data = mbs.systemData
+    for kind in ("Node", "Object", "Marker", "Load", "Sensor"):
+        count = getattr(data, f"NumberOf{kind}s")()
+        getter = getattr(mbs, f"Get{kind}")
+        entries = []
+        for i in range(count):
+            raw = getter(i)
+            entries.append({k: to_jsonable(v) for k, v in raw.items() if not k.startswith("V")})
+        items[kind.lower() + "s"] = entries
+    return items
+
+
+def system_summary(mbs: Any) -> dict[str, Any]:
+    try:
+        dof = mbs.ComputeSystemDegreeOfFreedom()
+        return {k: to_jsonable(v) for k, v in dof.items()}
+    except Exception as exc:
+        return {"error": str(exc)}
+
+
+# ----------------------------------------------------------------------------- main
+
+
+def run(job_path: Path) -> int:
+    job = json.loads(job_path.read_text())
+    workdir = job_path.parent
+    harness = Harness(workdir)
+    result: dict[str, Any] = {"stage": "started", "error": None, "error_type": None, "warnings": []}
+    t_start = time.perf_counter()
+    try:
+        harness.install()
+    except Exception as exc:
+        result.update(error=f"harness setup failed: {exc}", error_type=type(exc).__name__)
+        _write_result(workdir, result, harness)
+        return 3
+
+    namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(workdir / "program.py")}
+    program_error: BaseException | None = None
+    try:
+        code = compile(job["program"], str(workdir / "program.py"), "exec")
+        exec(code, namespace)
+    except HandOver:
+        pass
+    except SystemExit as exc:
+        program_error = exc
+    except BaseException as exc:
+        program_error = exc
+
+    if program_error is not None and harness.stage != "finished_assemble":
+        result.update(_describe(program_error), stage=harness.stage)
+        result["program_time"] = time.perf_counter() - t_start
+        _write_result(workdir, result, harness)
+        return 0
+    if program_error is not None:
+        harness.warnings.append(f"program raised after assemble: {_describe(program_error)['error']}")
+    if harness.mbs is None or harness.stage not in ("finished_assemble",):
+        result.update(stage=harness.stage, error="the program never called mbs.Assemble()",
+                      error_type="NoAssemble")
+        result["program_time"] = time.perf_counter() - t_start
+        _write_result(workdir, result, harness)
+        return 0
+
+    result["items"] = capture_items(harness.mbs)
+    result["system"] = system_summary(harness.mbs)
+    result["program_time"] = time.perf_counter() - t_start
+    t_solve = time.perf_counter()
+    try:
+        harness.solve(job["sim_block"], namespace)
+    except BaseException as exc:
+        result.update(_describe(exc))
+    result["solve_time"] = time.perf_counter() - t_solve
+    result["stage"] = harness.stage
+    _write_result(workdir, result, harness)
+    return 0
+
+
+def _describe(exc: BaseException) -> dict[str, Any]:
+    if isinstance(exc, SystemExit):
+        return {"error": f"program called exit({exc.code!r})", "error_type": "SystemExit"}
+    tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
+    text = "".join(tb)
+    return {"error": f"{type(exc).__name__}: {exc}", "error_type": type(exc).__name__,
+            "traceback": text[-4000:]}
+
+
+def _write_result(workdir: Path, result: dict[str, Any], harness: Harness) -> None:
+    import numpy as np
+
+    result["warnings"] = result.get("warnings", []) + harness.warnings
+    rows = [r for r in harness.rows if r[1] is not None]
+    if rows:
+        times = np.array([t for t, _ in rows], dtype=float)
+        width = max(len(q) for _, q in rows)
+        if all(len(q) == width for _, q in rows):
+            q = np.vstack([r for _, r in rows])
+            np.save(workdir / "trajectory.npy", np.column_stack([times, q]))
+            result["trajectory_rows"] = len(rows)
+    tmp = workdir / "result.json.tmp"
+    tmp.write_text(json.dumps(result))
+    os.replace(tmp, workdir / "result.json")
+
+
+def main() -> None:
+    if len(sys.argv) != 2:
+        sys.stderr.write("usage: python -m meceng.tools.runner JOB.json\n")
+        raise SystemExit(2)
+    code = run(Path(sys.argv[1]))
+    sys.stdout.flush()
+    os._exit(code)
+
+
+if __name__ == "__main__":
+    main()
