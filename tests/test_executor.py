@@ -1,0 +1,84 @@
+"""The isolated executor: every way a program can fail is a recorded verdict, never a crash."""
+
+from __future__ import annotations
+
+import os
+import time
+
+import pytest
+
+from meceng.tasks.registry import default_registry
+from meceng.tools.executor import ExecutionLimits, execute
+
+HEAD = "import exudyn as exu\nfrom exudyn.utilities import *\nSC = exu.SystemContainer()\nmbs = SC.AddSystem()\n"
+MODEL = "o = mbs.CreateMassPoint(referencePosition=[0,0,0], mass=1, gravity=[0,0,-9.81])\n"
+SIM = ("simulationSettings = exu.SimulationSettings()\nsimulationSettings.timeIntegration.endTime = 0.1\n"
+       "simulationSettings.timeIntegration.numberOfSteps = 100\nsimulationSettings.solution.file.write = False\n"
+       "mbs.SolveDynamic(simulationSettings)\n")
+
+
+async def test_solver_block_is_replaced_and_trajectory_recorded() -> None:
+    llm_sim = SIM.replace("numberOfSteps = 100", "numberOfSteps = 7").replace("endTime = 0.1", "endTime = 5")
+    result = await execute(HEAD + MODEL + "mbs.Assemble()\n" + llm_sim, SIM)
+    assert result.solved, result.error
+    assert result.trajectory is not None and result.trajectory.shape == (101, 3)
+    assert result.times[0] == 0.0 and abs(result.times[-1] - 0.1) < 1e-12
+    # free fall: z(t) = -g t^2 / 2
+    assert abs(result.trajectory[-1, 2] + 9.81 * 0.1**2 / 2) < 1e-6
+    assert result.items is not None and result.items["objects"][0]["objectType"] == "MassPoint"
+
+
+async def test_program_without_own_solve_and_in_main_guard() -> None:
+    code = HEAD + "if __name__ == '__main__':\n    " + MODEL + "    mbs.Assemble()\n"
+    result = await execute(code, SIM)
+    assert result.solved, result.error
+
+
+@pytest.mark.parametrize(("body", "stage", "kind", "text"), [
+    ("mbs.CreateMassPoint(referencePosition=[0,0,0], mas=1)\nmbs.Assemble()\n", "started", "exception", "TypeError"),
+    (MODEL + "raise SystemExit(0)\nmbs.Assemble()\n", "started", "exception", "exit"),
+    (MODEL, "started", "exception", "never called mbs.Assemble"),
+    (MODEL + "mbs.AddObject(ObjectConnectorSpringDamper(markerNumbers=[0, 5], stiffness=1))\nmbs.Assemble()\n",
+     "reached_assemble", "exception", "ModelError"),
+])
+async def test_failures_before_and_during_assemble(body: str, stage: str, kind: str, text: str) -> None:
+    result = await execute(HEAD + body, SIM)
+    assert result.stage == stage and result.error_kind == kind and text in (result.error or "")
+    assert not result.finished_assemble
+
+
+async def test_endless_loop_is_killed_with_its_children(tmp_path) -> None:
+    code = HEAD + MODEL + "mbs.Assemble()\nwhile True:\n    pass\n"
+    t0 = time.perf_counter()
+    result = await execute(code, SIM, ExecutionLimits(timeout_s=2.0), check=False)
+    assert time.perf_counter() - t0 < 10
+    assert result.error_kind == "timeout" and result.stage == "finished_assemble"
+
+
+async def test_segfault_is_a_verdict() -> None:
+    code = "import ctypes\nctypes.string_at(0)\n"
+    result = await execute(code, SIM, check=False)
+    assert result.error_kind == "crash" and "SIGSEGV" in (result.error or "")
+
+
+async def test_static_check_refuses_before_running(tmp_path) -> None:
+    canary = tmp_path / "canary.txt"
+    result = await execute(HEAD + f"open({str(canary)!r}, 'w').write('x')\n", SIM)
+    assert result.stage == "refused" and result.error_kind == "safety"
+    assert not canary.exists()
+
+
+async def test_secrets_are_not_in_the_child_environment(monkeypatch) -> None:
+    monkeypatch.setenv("OPENAI_API_KEY", "sk-secret")
+    code = "import os\nprint(sorted(os.environ))\nraise RuntimeError(os.environ.get('OPENAI_API_KEY', 'absent'))\n"
+    result = await execute(code, SIM, check=False)
+    assert "absent" in (result.error or "") and "sk-secret" not in result.stdout_tail
+    assert os.environ["OPENAI_API_KEY"] == "sk-secret"
+
+
+async def test_solver_failure_after_assemble() -> None:
+    instance = default_registry().get("single_pendulum").instance(0)
+    # a constraint distance that contradicts the initial position: the solver cannot start
+    code = instance.reference_program.replace("distance=length)", "distance=length * 3)")
+    result = await execute(code, instance.sim.block(), ExecutionLimits(timeout_s=60))
+    assert result.finished_assemble and not result.solved
