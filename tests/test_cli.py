@@ -1,0 +1,49 @@
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+from meceng.tasks.registry import default_registry
+
+
+def meceng(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "meceng.cli", *args], capture_output=True, text=True, timeout=120)
+
+
+def test_tasks_list_json_by_level() -> None:
+    proc = meceng("tasks", "list", "--level", "1", "--json")
+    assert proc.returncode == 0
+    listed = json.loads(proc.stdout)
+    expected = [m for m in default_registry() if m.level == "1"]
+    assert [t["slug"] for t in listed] == [m.slug for m in expected]
+    assert all(t["level"] == "1" for t in listed)
+
+
+def test_tasks_show_json_keys_and_determinism() -> None:
+    a = json.loads(meceng("tasks", "show", "newtons_cradle", "--seed", "3", "--json").stdout)
+    b = json.loads(meceng("tasks", "show", "43", "--seed", "3", "--json").stdout)
+    assert a == b
+    assert set(a) >= {"id", "slug", "name", "level", "seed", "params", "description", "required_components"}
+    assert a["id"] == 43 and a["seed"] == 3
+
+
+def test_tasks_reference_is_runnable(tmp_path) -> None:
+    proc = meceng("tasks", "reference", "single_pendulum", "--seed", "2")
+    assert proc.returncode == 0 and "mbs.Assemble()" in proc.stdout
+    script = tmp_path / "ref.py"
+    script.write_text(proc.stdout)
+    run = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert list(tmp_path.iterdir()) == [script]  # no solution files written
+
+
+def test_wrong_arguments_are_clear_errors(tmp_path) -> None:
+    proc = meceng("tasks", "show", "no_such_task")
+    assert proc.returncode == 2 and "unknown task model" in proc.stderr
+    proc = meceng("run", "--levels", "7")
+    assert proc.returncode == 2 and "levels" in proc.stderr
+    proc = meceng("evaluate", "single_pendulum", "--code", str(tmp_path / "missing.py"))
+    assert proc.returncode == 2 and "cannot read" in proc.stderr
+    proc = meceng("run", "--variations", "0")
+    assert proc.returncode == 2
