@@ -29,7 +29,8 @@ def test_gold_sweep_scores_everything(tmp_path: Path) -> None:
     run = _sweep(tmp_path, variations=1)
     models = default_registry().select(["1", "2"])
     assert len(run["tasks"]) == len(models)
-    failures = [(t["slug"], t["first_failure"], t.get("infrastructure_error")) for t in run["tasks"] if not t["overall"]]
+    failures = [(t["slug"], t["first_failure"], t.get("infrastructure_error"))
+                for t in run["tasks"] if not t["overall"]]
     assert failures == []
     assert run["summary"]["rates"]["overall"] == 1.0
     assert set(run) >= {"settings", "versions", "summary", "tasks"}
