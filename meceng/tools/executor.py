@@ -13,6 +13,7 @@ import contextlib
 import json
 import os
 import resource
+import secrets
 import shutil
 import signal
 import sys
@@ -39,6 +40,8 @@ class ExecutionLimits:
     file_bytes: int = 256 * 1024**2
     output_bytes: int = 64 * 1024
     keep_scratch: bool = False
+    guard: bool = True
+    isolate_network: bool = True
 
 
 @dataclass(frozen=True)
@@ -102,7 +105,7 @@ def child_env() -> dict[str, str]:
 
 
 def _limit_child(limits: ExecutionLimits) -> None:
-    """Runs in the child between fork and exec: resource limits only (session via Popen)."""
+    """Runs in the child between fork and exec: resource limits only (no library calls here)."""
     resource.setrlimit(resource.RLIMIT_AS, (limits.memory_bytes, limits.memory_bytes))
     cpu = int(limits.timeout_s) + 5
     resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
@@ -161,7 +164,9 @@ async def execute(
 
 async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> Execution:
     job = scratch / "job.json"
-    job.write_text(json.dumps({"program": program, "sim_block": sim_block}))
+    token = secrets.token_hex(16)
+    job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
+                               "guard": limits.guard, "isolate_network": limits.isolate_network}))
     (scratch / "program.py").write_text(program)
     t0 = time.perf_counter()
     proc = await asyncio.create_subprocess_exec(
@@ -195,7 +200,7 @@ async def _run_in(scratch: Path, program: str, sim_block: str, limits: Execution
     except TimeoutError:
         stdout, stderr = b"", b"[output not collected: a child kept the pipes open]"
     wall = time.perf_counter() - t0
-    return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits)
+    return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits, token)
 
 
 def _collect(
@@ -206,6 +211,7 @@ def _collect(
     stderr: bytes,
     wall: float,
     limits: ExecutionLimits,
+    token: str,
 ) -> Execution:
     out = stdout.decode(errors="replace")
     err = stderr.decode(errors="replace")
@@ -217,7 +223,8 @@ def _collect(
     if timed_out:
         return Execution(stage=last_stage, error=f"timeout after {limits.timeout_s:g} s (process group killed)",
                          error_kind="timeout", **common)
-    result_path = scratch / "result.json"
+    # only the harness knows the token: a result file the program forged is ignored
+    result_path = scratch / f"result-{token}.json"
     if not result_path.exists():
         if returncode is not None and returncode < 0:
             name = signal.Signals(-returncode).name if -returncode in signal.valid_signals() else str(-returncode)
@@ -230,7 +237,7 @@ def _collect(
     except (OSError, ValueError) as exc:
         return Execution(stage=last_stage, error=f"unreadable result: {exc}", error_kind="no_result", **common)
     times = trajectory = None
-    traj_path = scratch / "trajectory.npy"
+    traj_path = scratch / f"trajectory-{token}.npy"
     if traj_path.exists():
         data = np.load(traj_path)
         times, trajectory = data[:, 0], data[:, 1:]

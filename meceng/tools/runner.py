@@ -27,6 +27,10 @@ import traceback
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
+from meceng.tools import guard
+
 STAGES = ("started", "reached_assemble", "finished_assemble", "solver_started", "solved")
 
 
@@ -35,8 +39,10 @@ class HandOver(BaseException):
 
 
 class Harness:
-    def __init__(self, workdir: Path) -> None:
+    def __init__(self, workdir: Path, token: str = "") -> None:
         self.workdir = workdir
+        self.token = token
+        self.guard: Any = lambda active: None
         self.stage_log = open(workdir / "stage.log", "a", buffering=1)  # noqa: SIM115
         self.stage = "started"
         self.mbs: Any = None
@@ -79,6 +85,13 @@ class Harness:
         def noop(*args: Any, **kwargs: Any) -> Any:
             return None
 
+        # bind the harness to the real accessors before the program could replace them
+        data_class = type(exu.SystemContainer().AddSystem().systemData)
+        self.api = {name: getattr(data_class, name) for name in (
+            "GetODE2CoordinatesTotal", "NumberOfNodes", "NumberOfObjects", "NumberOfMarkers", "NumberOfLoads",
+            "NumberOfSensors")}
+        self.api.update({name: getattr(main_system, name) for name in (
+            "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "ComputeSystemDegreeOfFreedom")})
         main_system.Assemble = assemble
         main_system.SetPostStepUserFunction = set_post_step
         import exudyn.solver as solver
@@ -111,13 +124,13 @@ class Harness:
     def solve(self, sim_block: str, namespace: dict[str, Any]) -> None:
         """Run the ground truth's simulation block on the program's assembled system."""
         import exudyn
-        import numpy as np
 
         mbs = self.mbs
         user_post = self.user_post_step.get(id(mbs))
+        get_total = self.api["GetODE2CoordinatesTotal"]
 
         def record(system: Any, t: float) -> bool:
-            self.rows.append((t, np.array(system.systemData.GetODE2CoordinatesTotal())))
+            self.rows.append((t, np.array(get_total(system.systemData))))
             if user_post is not None:
                 return bool(user_post(system, t))
             return True
@@ -140,8 +153,6 @@ REF_KEYS = ("Number", "Numbers")
 
 def to_jsonable(value: Any) -> Any:
     """Item dict values to JSON: arrays to lists, index types to int, callables to a marker."""
-    import numpy as np
-
     if callable(value) and not isinstance(value, type):
         return "<function>"
     if isinstance(value, np.ndarray):
@@ -160,24 +171,24 @@ def to_jsonable(value: Any) -> Any:
         return str(value)
 
 
-def capture_items(mbs: Any) -> dict[str, list[dict[str, Any]]]:
+def capture_items(mbs: Any, api: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
     """Every item of the system as a plain dict, without visualization ('V*') entries."""
     items: dict[str, list[dict[str, Any]]] = {}
     data = mbs.systemData
     for kind in ("Node", "Object", "Marker", "Load", "Sensor"):
-        count = getattr(data, f"NumberOf{kind}s")()
-        getter = getattr(mbs, f"Get{kind}")
+        count = api[f"NumberOf{kind}s"](data)
+        getter = api[f"Get{kind}"]
         entries = []
         for i in range(count):
-            raw = getter(i)
+            raw = getter(mbs, i)
             entries.append({k: to_jsonable(v) for k, v in raw.items() if not k.startswith("V")})
         items[kind.lower() + "s"] = entries
     return items
 
 
-def system_summary(mbs: Any) -> dict[str, Any]:
+def system_summary(mbs: Any, api: dict[str, Any]) -> dict[str, Any]:
     try:
-        dof = mbs.ComputeSystemDegreeOfFreedom()
+        dof = api["ComputeSystemDegreeOfFreedom"](mbs)
         return {k: to_jsonable(v) for k, v in dof.items()}
     except Exception as exc:
         return {"error": str(exc)}
@@ -188,8 +199,9 @@ def system_summary(mbs: Any) -> dict[str, Any]:
 
 def run(job_path: Path) -> int:
     job = json.loads(job_path.read_text())
+    job_path.unlink()  # the token in it must not be readable by the program
     workdir = job_path.parent
-    harness = Harness(workdir)
+    harness = Harness(workdir, token=str(job.get("token", "")))
     result: dict[str, Any] = {"stage": "started", "error": None, "error_type": None, "warnings": []}
     t_start = time.perf_counter()
     try:
@@ -201,15 +213,20 @@ def run(job_path: Path) -> int:
 
     namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(workdir / "program.py")}
     program_error: BaseException | None = None
+    if job.get("guard", True):
+        harness.guard = guard.install(str(workdir), harness.warnings.append)
     try:
         code = compile(job["program"], str(workdir / "program.py"), "exec")
+        harness.guard(True)
         exec(code, namespace)
     except HandOver:
         pass
     except SystemExit as exc:
         program_error = exc
-    except BaseException as exc:
+    except BaseException as exc:  # everything the program raises is a verdict
         program_error = exc
+    finally:
+        harness.guard(False)
 
     if program_error is not None and harness.stage != "finished_assemble":
         result.update(_describe(program_error), stage=harness.stage)
@@ -225,14 +242,18 @@ def run(job_path: Path) -> int:
         _write_result(workdir, result, harness)
         return 0
 
-    result["items"] = capture_items(harness.mbs)
-    result["system"] = system_summary(harness.mbs)
+    result["network"] = os.environ.get("MECENG_NETWORK", "shared")
+    result["items"] = capture_items(harness.mbs, harness.api)
+    result["system"] = system_summary(harness.mbs, harness.api)
     result["program_time"] = time.perf_counter() - t_start
     t_solve = time.perf_counter()
     try:
+        harness.guard(True)  # the program's user functions run inside the solver
         harness.solve(job["sim_block"], namespace)
     except BaseException as exc:
         result.update(_describe(exc))
+    finally:
+        harness.guard(False)
     result["solve_time"] = time.perf_counter() - t_solve
     result["stage"] = harness.stage
     _write_result(workdir, result, harness)
@@ -249,8 +270,8 @@ def _describe(exc: BaseException) -> dict[str, Any]:
 
 
 def _write_result(workdir: Path, result: dict[str, Any], harness: Harness) -> None:
-    import numpy as np
-
+    harness.guard(False)
+    result["token"] = harness.token
     result["warnings"] = result.get("warnings", []) + harness.warnings
     rows = [r for r in harness.rows if r[1] is not None]
     if rows:
@@ -258,18 +279,48 @@ def _write_result(workdir: Path, result: dict[str, Any], harness: Harness) -> No
         width = max(len(q) for _, q in rows)
         if all(len(q) == width for _, q in rows):
             q = np.vstack([r for _, r in rows])
-            np.save(workdir / "trajectory.npy", np.column_stack([times, q]))
+            np.save(workdir / f"trajectory-{harness.token}.npy", np.column_stack([times, q]))
             result["trajectory_rows"] = len(rows)
-    tmp = workdir / "result.json.tmp"
+    tmp = workdir / f"result-{harness.token}.json.tmp"
     tmp.write_text(json.dumps(result))
-    os.replace(tmp, workdir / "result.json")
+    os.replace(tmp, workdir / f"result-{harness.token}.json")
+
+
+_CLONE_NEWUSER = 0x10000000
+_CLONE_NEWNET = 0x40000000
+
+
+def unshare_network() -> str:
+    """Move this process into an empty network namespace (no interface, not even loopback).
+
+    Works as root, or unprivileged where user namespaces are enabled; elsewhere the audit hook's
+    socket refusal is the remaining barrier. Done first thing, while the process has one thread.
+    """
+    import ctypes
+
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+    except OSError:
+        return "unavailable"
+    if libc.unshare(_CLONE_NEWNET) == 0:
+        return "netns"
+    if libc.unshare(_CLONE_NEWUSER | _CLONE_NEWNET) == 0:
+        return "userns+netns"
+    return "refused by the kernel"
 
 
 def main() -> None:
     if len(sys.argv) != 2:
         sys.stderr.write("usage: python -m meceng.tools.runner JOB.json\n")
         raise SystemExit(2)
-    code = run(Path(sys.argv[1]))
+    job_path = Path(sys.argv[1])
+    try:
+        isolate = json.loads(job_path.read_text()).get("isolate_network", True)
+    except (OSError, ValueError):
+        isolate = True
+    if isolate:
+        os.environ["MECENG_NETWORK"] = unshare_network()
+    code = run(job_path)
     sys.stdout.flush()
     os._exit(code)
 
