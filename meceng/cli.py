@@ -73,6 +73,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--select-template", default="CI1")
     parser.add_argument("--code-template", default="MBS1")
     parser.add_argument("--no-progress", action="store_true")
+    parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
+                        help="continue a killed run in RUN_DIR with its saved settings")
 
 
 def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
@@ -187,13 +189,31 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
     return 0 if verdict.overall else 1
 
 
+def resumed_settings(args: argparse.Namespace) -> Any:
+    from meceng.pipeline import RunSettings
+
+    run_dir: Path = args.resume
+    try:
+        data = json.loads((run_dir / "settings.json").read_text())
+    except (OSError, ValueError) as exc:
+        raise SystemExit(f"error: {run_dir} is not a run folder with a readable settings.json ({exc})") from None
+    import dataclasses
+
+    settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
+    return dataclasses.replace(settings, progress=not args.no_progress)
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from meceng.logs import configure_logging
     from meceng.pipeline import run_benchmark
 
-    settings = run_settings(args, llm_settings(args))
+    settings = resumed_settings(args) if args.resume else run_settings(args, llm_settings(args))
     configure_logging(None, console=True)
-    path = asyncio.run(run_benchmark(settings))
+    try:
+        path = asyncio.run(run_benchmark(settings))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     configure_logging(None)
     print_summary(path)
     return 0

@@ -25,6 +25,7 @@ from typing import Any
 
 import structlog
 
+from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
 from meceng.agents.catalog import Catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
@@ -54,6 +55,21 @@ class RunSettings:
     code_template: str = "MBS1"
     solution_tolerance: float = 1e-5
     progress: bool = True
+    resume: bool = False
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
+        """Rebuild the settings a run was started with (for ``--resume``)."""
+        llm = dict(data["llm"])
+        llm["hosts"] = tuple(llm["hosts"])
+        pipeline = data["pipeline"]
+        return cls(
+            llm=LLMSettings(**llm), levels=tuple(pipeline["levels"]), only=tuple(pipeline["only"]),
+            variations=pipeline["variations"], seed=pipeline["seed"], out=out, run_name=run_name,
+            workers=pipeline["workers"], exec_timeout_s=pipeline["exec_timeout_s"],
+            solution_tolerance=pipeline["solution_tolerance"], select_template=data["prompt"]["select_template"],
+            code_template=data["prompt"]["code_template"], resume=True,
+        )
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -167,19 +183,20 @@ class RunWriter:
         self.run_dir = run_dir
         (run_dir / "programs").mkdir(parents=True, exist_ok=True)
         self.journal_path = run_dir / "journal.jsonl"
+        self.finished = read_jsonl(self.journal_path)  # also cuts a line half-written by a kill
         self._journal = open(self.journal_path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
 
     def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
         folder = self.run_dir / "programs" / instance.slug
         folder.mkdir(parents=True, exist_ok=True)
         reference = folder / f"seed{instance.seed}_reference.py"
-        reference.write_text(instance.reference_program)
+        _write_atomic(reference, instance.reference_program)
         files = {"reference": str(reference.relative_to(self.run_dir))}
         if code is not None:
             generated = folder / f"seed{instance.seed}_generated.py"
             header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
                                     instance.description)
-            generated.write_text(f"{header}\n{code}")
+            _write_atomic(generated, f"{header}\n{code}")
             files["generated"] = str(generated.relative_to(self.run_dir))
         return files
 
@@ -188,9 +205,11 @@ class RunWriter:
         self._journal.flush()
         os.fsync(self._journal.fileno())
 
-    def finish(self, settings: RunSettings, records: list[dict[str, Any]], started: float, wall: float) -> Path:
+    def finish(self, settings: RunSettings, records: list[dict[str, Any]], started: float, wall: float,
+               extra: dict[str, Any] | None = None) -> Path:
         self._journal.close()
         run = {
+            **(extra or {}),
             "settings": settings.to_json(),
             "versions": versions(),
             "gpu": gpu_telemetry(),
@@ -204,6 +223,12 @@ class RunWriter:
         tmp.write_text(json.dumps(run, indent=1, default=str))
         os.replace(tmp, path)
         return path
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
 
 
 def task_record(
@@ -291,19 +316,28 @@ async def run_benchmark(
     run_dir = settings.out / (settings.run_name or f"{stamp}_{_safe_name(settings.llm.model)}")
     run_dir.mkdir(parents=True, exist_ok=True)
     writer = RunWriter(run_dir)
+    if writer.finished and not settings.resume:
+        raise ValueError(f"{run_dir} already holds a run; resume it with --resume {run_dir}")
+    if not (run_dir / "settings.json").exists():
+        _write_atomic(run_dir / "settings.json", json.dumps(settings.to_json(), indent=1))
+    # the last record of a task wins; tasks that failed for infrastructure reasons are tried again
+    latest = {f"{r['slug']}@{r['seed']}": r for r in writer.finished}
+    done = {k: r for k, r in latest.items() if r.get("first_failure") != "infrastructure"}
+    records: list[dict[str, Any]] = list(done.values())
+    todo = [i for i in instances if i.key not in done]
     own_backend = backend is None
-    backend = backend or make_backend(settings.llm)
+    cache = ResponseCache(run_dir / "responses.jsonl")
+    backend = CachedBackend(backend or make_backend(settings.llm), cache, settings.llm)
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
                           Tolerances(solution=settings.solution_tolerance), catalog)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) + settings.workers + 2)
-    records: list[dict[str, Any]] = []
-    log.info("run started", run_dir=str(run_dir), tasks=len(instances), model=settings.llm.model)
+    log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(done), model=settings.llm.model)
 
     from meceng.progress import progress_bar
 
     t0 = time.perf_counter()
-    with progress_bar(len(instances), f"{settings.llm.model}", enabled=settings.progress) as advance:
+    with progress_bar(len(todo), f"{settings.llm.model}", enabled=settings.progress) as advance:
 
         async def one(instance: TaskInstance) -> None:
             async with window:
@@ -319,13 +353,17 @@ async def run_benchmark(
             advance(record["overall"])
 
         try:
-            await asyncio.gather(*(one(i) for i in instances))
+            await asyncio.gather(*(one(i) for i in todo))
         finally:
             if own_backend:
                 await backend.aclose()
+            else:
+                cache.close()
     order = {inst.key: k for k, inst in enumerate(instances)}
     records.sort(key=lambda r: order.get(f"{r['slug']}@{r['seed']}", 0))
-    path = writer.finish(settings, records, started, time.perf_counter() - t0)
+    extra = {"llm_calls": {"answered_from_cache": cache.hits, "requested": cache.misses},
+             "resumed_tasks": len(done)}
+    path = writer.finish(settings, records, started, time.perf_counter() - t0, extra)
     log.info("run finished", run_json=str(path))
     return path
 

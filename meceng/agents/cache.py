@@ -1,0 +1,92 @@
+"""Response cache: every answered LLM request, appended to a JSONL file as it arrives.
+
+Keyed by (backend, model, messages, options, think, seed), so a resumed run repeats no LLM call
+it has already paid for. Lines are written whole and fsynced; a line cut by a kill is ignored.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import os
+from pathlib import Path
+from typing import Any
+
+from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMSettings
+
+
+def request_key(settings: LLMSettings, request: ChatRequest) -> str:
+    payload = {
+        "backend": settings.backend, "model": settings.model, "messages": list(request.messages),
+        "options": settings.options(), "think": settings.think, "purpose": request.purpose,
+    }
+    return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
+
+
+def read_jsonl(path: Path) -> list[dict[str, Any]]:
+    """Complete lines of a JSONL file; a trailing partial line (killed writer) is cut off."""
+    if not path.exists():
+        return []
+    data = path.read_bytes()
+    end = data.rfind(b"\n") + 1
+    if end < len(data):
+        with path.open("r+b") as f:
+            f.truncate(end)
+    rows = []
+    for line in data[:end].splitlines():
+        try:
+            rows.append(json.loads(line))
+        except ValueError:
+            continue
+    return rows
+
+
+class ResponseCache:
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.entries: dict[str, dict[str, Any]] = {row["key"]: row["response"] for row in read_jsonl(path)}
+        self._file = open(path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
+        self.hits = 0
+        self.misses = 0
+
+    def get(self, key: str) -> ChatResponse | None:
+        entry = self.entries.get(key)
+        if entry is None:
+            return None
+        self.hits += 1
+        return ChatResponse(**entry)
+
+    def put(self, key: str, response: ChatResponse) -> None:
+        self.misses += 1
+        entry = dataclasses.asdict(response)
+        self.entries[key] = entry
+        self._file.write(json.dumps({"key": key, "response": entry}) + "\n")
+        self._file.flush()
+        os.fsync(self._file.fileno())
+
+    def close(self) -> None:
+        self._file.close()
+
+
+class CachedBackend:
+    """Wraps a backend: answered requests come from the cache, new answers go into it."""
+
+    def __init__(self, inner: Backend, cache: ResponseCache, settings: LLMSettings) -> None:
+        self.inner = inner
+        self.cache = cache
+        self.settings = settings
+        self.name = inner.name
+
+    async def chat(self, request: ChatRequest) -> ChatResponse:
+        key = request_key(self.settings, request)
+        cached = self.cache.get(key)
+        if cached is not None:
+            return cached
+        response = await self.inner.chat(request)
+        self.cache.put(key, response)
+        return response
+
+    async def aclose(self) -> None:
+        await self.inner.aclose()
+        self.cache.close()

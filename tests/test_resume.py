@@ -1,0 +1,75 @@
+"""A gold sweep killed with SIGKILL at three points and resumed ends with the same run.json as an
+uninterrupted one; no finished task is redone and no LLM call is repeated."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+ONLY = "1,2,3,4,9,11,12,19,23,29,35,43"
+VOLATILE = ("time", "timing", "duration", "started", "stderr_tail", "endpoint")
+
+
+def start(out: Path, name: str, resume: bool = False) -> subprocess.Popen[str]:
+    args = ["--resume", str(out / name)] if resume else [
+        "--model", "gold", "--only", ONLY, "--variations", "2", "--seed", "5", "--out", str(out), "--name", name]
+    return subprocess.Popen([sys.executable, "-m", "meceng.cli", "run", *args, "--no-progress"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def journal_lines(path: Path) -> int:
+    return path.read_bytes().count(b"\n") if path.exists() else 0
+
+
+def normalized(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: normalized(v) for k, v in value.items() if not any(w in k for w in VOLATILE)}
+    if isinstance(value, list):
+        return [normalized(v) for v in value]
+    return value
+
+
+def comparable(run_json: Path) -> dict[str, Any]:
+    run = json.loads(run_json.read_text())
+    return normalized({"tasks": run["tasks"], "summary": {k: v for k, v in run["summary"].items() if k != "timing"}})
+
+
+def test_killed_runs_resume_to_the_same_result(tmp_path: Path) -> None:
+    reference = start(tmp_path, "straight")
+    assert reference.wait(timeout=600) == 0, reference.stderr.read() if reference.stderr else ""
+    expected = comparable(tmp_path / "straight" / "run.json")
+    total = len(expected["tasks"])
+
+    journal = tmp_path / "killed" / "journal.jsonl"
+    for kill_after in (1, total // 2, total - 1):
+        proc = start(tmp_path, "killed", resume=journal.exists())
+        deadline = time.monotonic() + 300
+        while journal_lines(journal) < kill_after and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.02)
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+    done_before = journal_lines(journal)
+    assert done_before < total or not (tmp_path / "killed" / "run.json").exists()
+
+    final = start(tmp_path, "killed", resume=True)
+    assert final.wait(timeout=600) == 0, final.stderr.read() if final.stderr else ""
+    run = json.loads((tmp_path / "killed" / "run.json").read_text())
+    assert comparable(tmp_path / "killed" / "run.json") == expected
+    # every task ran once: the journal holds one line per task, the cache one line per LLM call
+    assert journal_lines(journal) == total
+    assert journal_lines(tmp_path / "killed" / "responses.jsonl") == 2 * total
+    assert run["resumed_tasks"] == done_before
+
+
+def test_existing_run_folder_is_not_overwritten(tmp_path: Path) -> None:
+    first = start(tmp_path, "once")
+    assert first.wait(timeout=600) == 0
+    again = start(tmp_path, "once")
+    assert again.wait(timeout=600) == 2
+    assert "--resume" in (again.stderr.read() if again.stderr else "")
