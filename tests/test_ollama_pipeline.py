@@ -146,3 +146,68 @@ async def test_truncated_answer_is_flagged() -> None:
         response = await backend.chat(ChatRequest(user_messages("x"), "code", "t@0"))
         await backend.aclose()
     assert response.truncated and response.meta()["truncated"] is True
+
+
+async def test_retry_after_is_respected() -> None:
+    calls: list[float] = []
+
+    def limited(body):
+        import time as _time
+
+        calls.append(_time.monotonic())
+        if len(calls) == 1:
+            return 429, {"error": "too many requests"}, {"Retry-After": "1"}
+        return 200, chat_reply("ok"), {}
+
+    async with FakeOllama(limited) as server:
+        backend = OllamaBackend(LLMSettings(model="m", backend="ollama", hosts=(server.url,), backoff_s=0.01))
+        response = await backend.chat(ChatRequest(user_messages("x"), "select", "t@0"))
+        await backend.aclose()
+    assert response.content == "ok" and response.attempts == 2
+    assert calls[1] - calls[0] >= 0.95  # waited as told, not the 0.01 s backoff
+
+
+async def test_flaky_server_loses_no_task(tmp_path: Path) -> None:
+    """20 % transient errors, 10 % timeouts, some dropped connections and malformed bodies: every
+    task ends with a record; tasks the server never answered are infrastructure failures."""
+    import asyncio
+    import random
+
+    rng = random.Random(7)
+    registry = default_registry()
+    slugs = ["single_mass_oscillator", "single_pendulum", "flying_mass_point", "double_mass_oscillator",
+             "free_fall_mass_point"]
+    by_description = {registry.get(s).instance(k).description: registry.get(s).instance(k)
+                      for s in slugs for k in range(4)}
+
+    async def responder(body):
+        roll = rng.random()
+        if roll < 0.2:
+            return rng.choice([500, 502, 503]), {"error": "overloaded"}, {}
+        if roll < 0.3:
+            await asyncio.sleep(1.0)  # longer than the client's timeout
+        if roll < 0.33:
+            return 200, "{not json", {}
+        prompt = body["messages"][-1]["content"]
+        instance = next(inst for desc, inst in by_description.items() if desc in prompt)
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        return 200, chat_reply(gold_code(instance.reference_program)), {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="flaky", backend="ollama", hosts=(server.url,), batch_size=4, timeout_s=0.5,
+                          max_attempts=3, backoff_s=0.01)
+        settings = RunSettings(llm=llm, only=tuple(slugs), variations=4, seed=0, out=tmp_path, run_name="flaky",
+                               workers=2, progress=False)
+        run_json = await run_benchmark(settings)
+    run = json.loads(run_json.read_text())
+    assert len(run["tasks"]) == 20  # none lost
+    infra = [t for t in run["tasks"] if t["first_failure"] == "infrastructure"]
+    graded = [t for t in run["tasks"] if t["first_failure"] != "infrastructure"]
+    assert all(t["infrastructure_error"] for t in infra)
+    assert all(t["overall"] for t in graded)  # every answered task is a gold answer and passes
+    summary = run["summary"]
+    assert summary["infrastructure_failures"] == len(infra) and summary["counted"] == len(graded)
+    if graded:
+        assert summary["rates"]["overall"] == 1.0  # infrastructure failures are not model failures
+    assert len(server.requests) > 40  # retries happened

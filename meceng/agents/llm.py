@@ -13,6 +13,7 @@ model, unsupported option) are permanent and never retried.
 from __future__ import annotations
 
 import asyncio
+import contextvars
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -21,11 +22,37 @@ from typing import Any, Protocol
 import httpx
 import ollama
 import structlog
-from tenacity import AsyncRetrying, retry_if_exception, stop_after_attempt, wait_exponential
+from tenacity import AsyncRetrying, RetryCallState, retry_if_exception, stop_after_attempt, wait_exponential
 
 log = structlog.get_logger(__name__)
 
 TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504})
+
+#: Retry-After of the last HTTP response seen in this task (set by an httpx response hook).
+_retry_after: contextvars.ContextVar[float | None] = contextvars.ContextVar("retry_after", default=None)
+
+
+def parse_retry_after(value: str | None) -> float | None:
+    """Seconds from a Retry-After header (delta-seconds or HTTP date); None if absent or bad."""
+    if not value:
+        return None
+    try:
+        return max(0.0, float(value))
+    except ValueError:
+        pass
+    from email.utils import parsedate_to_datetime
+
+    try:
+        when = parsedate_to_datetime(value)
+    except (TypeError, ValueError):
+        return None
+    import datetime as dt
+
+    return max(0.0, (when - dt.datetime.now(dt.UTC)).total_seconds())
+
+
+async def _remember_retry_after(response: httpx.Response) -> None:
+    _retry_after.set(parse_retry_after(response.headers.get("retry-after")))
 
 
 @dataclass(frozen=True)
@@ -120,10 +147,12 @@ class ChatResponse:
 class LLMError(Exception):
     """A request that could not be answered: an infrastructure failure, not a model failure."""
 
-    def __init__(self, message: str, *, transient: bool, status: int | None = None) -> None:
+    def __init__(self, message: str, *, transient: bool, status: int | None = None,
+                 retry_after: float | None = None) -> None:
         super().__init__(message)
         self.transient = transient
         self.status = status
+        self.retry_after = retry_after
 
 
 class Backend(Protocol):
@@ -174,7 +203,8 @@ class OllamaBackend:
 
     def __init__(self, settings: LLMSettings, client_factory: Any = None) -> None:
         self.settings = settings
-        factory = client_factory or (lambda host: ollama.AsyncClient(host=host, timeout=settings.timeout_s))
+        factory = client_factory or (lambda host: ollama.AsyncClient(
+            host=host, timeout=settings.timeout_s, event_hooks={"response": [_remember_retry_after]}))
         self.endpoints = [
             Endpoint(host=h, client=factory(h), slots=asyncio.Semaphore(settings.batch_size),
                      capacity=settings.batch_size)
@@ -184,10 +214,18 @@ class OllamaBackend:
 
     async def chat(self, request: ChatRequest) -> ChatResponse:
         attempts = 0
+        backoff = wait_exponential(multiplier=self.settings.backoff_s, max=60)
+
+        def wait(state: RetryCallState) -> float:
+            exc = state.outcome.exception() if state.outcome else None
+            if isinstance(exc, LLMError) and exc.retry_after is not None:
+                return min(exc.retry_after, 120.0)  # the server said when; believe it, within reason
+            return backoff(state)
+
         retrying = AsyncRetrying(
             retry=retry_if_exception(_is_transient),
             stop=stop_after_attempt(self.settings.max_attempts),
-            wait=wait_exponential(multiplier=self.settings.backoff_s, max=60),
+            wait=wait,
             reraise=True,
         )
         async for attempt in retrying:
@@ -209,6 +247,7 @@ class OllamaBackend:
         try:
             async with endpoint.slots:
                 t0 = time.perf_counter()
+                _retry_after.set(None)
                 try:
                     raw = await endpoint.client.chat(
                         model=self.settings.model,
@@ -222,7 +261,7 @@ class OllamaBackend:
                     transient = exc.status_code in TRANSIENT_STATUS
                     self._note_failure(endpoint, transient)
                     raise LLMError(f"ollama error {exc.status_code}: {exc.error}", transient=transient,
-                                   status=exc.status_code) from exc
+                                   status=exc.status_code, retry_after=_retry_after.get()) from exc
                 except (ConnectionError, httpx.TransportError, TimeoutError) as exc:
                     self._note_failure(endpoint, True)
                     raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
