@@ -49,6 +49,7 @@ EXPECTED_NAMES = (
     "SphereSphereContact",
     "SphereTriangleContact",
     "Sensor",
+    "JointPDControl",
 )
 
 #: Appended to every example: any deprecated name the program used, even where the warning was not

@@ -188,6 +188,8 @@ async def test_flaky_server_loses_no_task(tmp_path: Path) -> None:
             await asyncio.sleep(1.0)  # longer than the client's timeout
         if roll < 0.33:
             return 200, "{not json", {}
+        if roll < 0.36:
+            return -1, None, {}  # connection dropped without an answer
         prompt = body["messages"][-1]["content"]
         instance = next(inst for desc, inst in by_description.items() if desc in prompt)
         if "<components>" in prompt:

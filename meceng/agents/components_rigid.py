@@ -748,6 +748,61 @@ SENSOR = Component(
 )
 
 
+JOINT_PD_CONTROL = Component(
+    name="JointPDControl",
+    description=(
+        "PD-controlled joint drive that makes the angle of a revolute joint follow a prescribed trajectory "
+        "q_d(t) (torsional spring-damper with a torque user function); for robot joints, servo drives, "
+        "prescribed joint motion"
+    ),
+    context=_text("""
+        def UFjoint(mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset):
+            qd, vd = JointTrajectory(t)        # desired joint angle [rad] and rate [rad/s] at time t
+            return stiffness * (rotation - qd) + damping * (angularVelocity - vd)
+        mbs.CreateRevoluteJoint(itemNumbers=[oParent, oChild], position=p, axis=a)
+        mbs.CreateTorsionalSpringDamper(itemNumbers=[oParent, oChild], position=p, axis=a,
+                                        stiffness=kP, damping=kD, springTorqueUserFunction=UFjoint)
+        - The torsional spring-damper measures the joint angle itself: rotation [rad] is the rotation of
+          itemNumbers[1] relative to itemNumbers[0] about the GLOBAL axis a (right-hand rule), zero in the reference
+          configuration and counted over several turns; angularVelocity [rad/s] is its rate.
+        - The returned value replaces the connector torque k*(rotation - offset) + d*angularVelocity; it acts on
+          both items (drive and reaction), so the function above is the PD control torque
+          tau = kP*(qd - q) + kD*(vd - q') with the gains passed as stiffness and damping.
+        - The joint angle is measured from the reference configuration: build the bodies in the start pose and
+          give qd relative to it (subtract the start angle if the trajectory is given in absolute angles).
+        - Signature exactly (mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset) -> float;
+          one revolute joint + one torsional spring-damper (same items, position and axis) per driven joint, each
+          with its own function (e.g. created by a factory function with the joint's trajectory data).
+        - The solver includes the connector in its Jacobian, so stiff gains converge well.
+    """),
+    example=_example("""
+        # a link (long side along local x) on a revolute joint about global z, moved from 0 to 60 degrees by
+        # a cosine trajectory in 0.8 s and then held; gravity in -z is carried by the joint
+        qEnd = 60 * np.pi / 180
+        duration = 0.8
+
+        def JointTrajectory(t):
+            if t < duration:
+                return (qEnd * (1 - np.cos(np.pi * t / duration)) / 2,
+                        qEnd * np.pi / (2 * duration) * np.sin(np.pi * t / duration))
+            return qEnd, 0.0
+
+        def UFjoint(mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset):
+            qd, vd = JointTrajectory(t)
+            return stiffness * (rotation - qd) + damping * (angularVelocity - vd)
+
+        oGround = mbs.CreateGround(referencePosition=[0, 0, 0])
+        oLink = mbs.CreateRigidBody(referencePosition=[0.25, 0, 0],
+                                    inertia=InertiaCuboid(density=2700, sideLengths=[0.5, 0.05, 0.05]),
+                                    gravity=[0, 0, -9.81])
+        mbs.CreateRevoluteJoint(itemNumbers=[oGround, oLink], position=[0, 0, 0], axis=[0, 0, 1])
+        mbs.CreateTorsionalSpringDamper(itemNumbers=[oGround, oLink], position=[0, 0, 0], axis=[0, 0, 1],
+                                        stiffness=200.0, damping=10.0, springTorqueUserFunction=UFjoint)
+    """),
+    dependencies=("RevoluteJoint", "TorsionalSpringDamper"),
+)
+
+
 COMPONENTS: tuple[Component, ...] = (
     GROUND,
     MASS_POINT,
@@ -773,4 +828,5 @@ COMPONENTS: tuple[Component, ...] = (
     SPHERE_SPHERE_CONTACT,
     SPHERE_TRIANGLE_CONTACT,
     SENSOR,
+    JOINT_PD_CONTROL,
 )
