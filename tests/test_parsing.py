@@ -36,3 +36,16 @@ def test_unfenced_program_and_missing_code() -> None:
     assert extract_code("import exudyn as exu\nx = 1\n").code is not None
     missing = extract_code("The answer is 42.")
     assert missing.code is None and "no Python code block" in (missing.error or "")
+
+
+def test_every_prompt_variant_keeps_the_answer_schema() -> None:
+    from meceng.agents.prompts import CODE_TEMPLATES, SELECT_TEMPLATES, code_prompt, select_prompt
+
+    assert sorted(SELECT_TEMPLATES) == [f"CI{i}" for i in range(1, 7)]
+    assert sorted(CODE_TEMPLATES) == [f"MBS{i}" for i in range(1, 5)]
+    for name in SELECT_TEMPLATES:
+        text = select_prompt(name, "DESCRIPTION-X", "- Ground: ground")
+        assert "DESCRIPTION-X" in text and "- Ground: ground" in text and "<components>" in text
+    for name in CODE_TEMPLATES:
+        text = code_prompt(name, "DESCRIPTION-X", "CONTEXT-Y")
+        assert "DESCRIPTION-X" in text and "CONTEXT-Y" in text and "```python" in text

@@ -36,6 +36,50 @@ Components:
 
 Reply with <components><component>Name</component>...</components> and no other text.
 """,
+    "CI3": """Task: select simulation components for an Exudyn multibody model.
+
+Mechanical system:
+{description}
+
+Catalog (name: purpose):
+{menu}
+
+Instructions:
+1. Identify the bodies (mass points or rigid bodies) and how they are connected.
+2. Identify loads, contacts and constraints.
+3. Choose every catalog component needed for steps 1 and 2; do not invent names.
+Output format (nothing else):
+<components>
+<component>Name</component>
+</components>
+""",
+    "CI4": """{description}
+
+From the list below, name the Exudyn components needed to simulate the system above.
+{menu}
+
+Format: <components><component>Name</component>...</components>
+""",
+    "CI5": """You are a careful simulation engineer. A colleague will write the Exudyn program using only the
+documentation of the components you select, so a missing component makes the model impossible,
+while an unnecessary one does no harm.
+
+System description:
+{description}
+
+Components you can select:
+{menu}
+
+Answer strictly as:
+<components>
+<component>Name</component>
+</components>
+""",
+    "CI6": """System: {description}
+Components: {menu}
+Which components are required? Use exactly the names above. Answer only with
+<components><component>Name</component>...</components>
+""",
 }
 
 CODE_TEMPLATES: dict[str, str] = {
@@ -65,6 +109,47 @@ Rules:
   simulationSettings = exu.SimulationSettings() with the end time and number of steps given in
   the description and call mbs.SolveDynamic(simulationSettings).
 - Return the whole program in a single ```python code block.
+""",
+    "MBS2": """Write an Exudyn Python program for this system:
+{description}
+
+Exudyn documentation:
+{context}
+
+Use `import exudyn as exu`, `from exudyn.utilities import *`, `SC = exu.SystemContainer()`,
+`mbs = SC.AddSystem()`; call `mbs.Assemble()` and then `mbs.SolveDynamic(simulationSettings)` with
+the end time and number of steps given above. No file I/O, no graphics. Put the program in one
+```python code block.
+""",
+    "MBS3": """Role: expert in multibody dynamics and the Exudyn simulation code.
+Goal: a complete, runnable Python program that simulates the system below.
+
+System description:
+{description}
+
+Component documentation (use these functions; follow their conventions exactly):
+{context}
+
+Requirements:
+1. Program header: import exudyn as exu; from exudyn.utilities import *; import numpy as np;
+   SC = exu.SystemContainer(); mbs = SC.AddSystem().
+2. Order: create items in the order stated in the description; bodies in the order of their index.
+3. Values: SI units; use exactly the numbers of the description; derive positions and rotations
+   from the stated formulas.
+4. Forbidden: file reading or writing, imports of os/sys/subprocess/socket, renderer,
+   visualization, plots.
+5. Ending: mbs.Assemble(); simulationSettings = exu.SimulationSettings() with endTime and
+   numberOfSteps from the description; mbs.SolveDynamic(simulationSettings).
+6. Answer: one ```python code block with the whole program.
+""",
+    "MBS4": """{description}
+
+{context}
+
+Create the Exudyn model of the system described above (SC = exu.SystemContainer(),
+mbs = SC.AddSystem()), adding items in the order given, then mbs.Assemble() and
+mbs.SolveDynamic(simulationSettings) with the stated end time and steps. Do not write files or
+open a renderer. Give the complete program in a single ```python block.
 """,
 }
 
