@@ -25,6 +25,7 @@ def _sweep(tmp_path: Path, variations: int, levels: str = "1,2") -> dict:
     return json.loads((tmp_path / "gold" / "run.json").read_text())
 
 
+@pytest.mark.timeout(1200)
 def test_gold_sweep_scores_everything(tmp_path: Path) -> None:
     run = _sweep(tmp_path, variations=1)
     models = default_registry().select(["1", "2"])
