@@ -228,6 +228,21 @@ def print_summary(run_json: Path) -> None:
           f"failures\n{line}")
 
 
+def cmd_report(args: argparse.Namespace) -> int:
+    import time
+
+    from meceng.report import build_report
+
+    t0 = time.perf_counter()
+    try:
+        files = build_report(args.runs, args.out)
+    except (FileNotFoundError, ValueError, KeyError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(f"report written in {time.perf_counter() - t0:.1f} s: {files['html']} {files['markdown']}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="meceng", description="MecEng: LLMs building multibody models")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -255,6 +270,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--timeout", type=float, default=60.0)
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_evaluate)
+
+    p = sub.add_parser("report", help="HTML, Markdown and PNG report from runs")
+    p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
+    p.add_argument("--out", type=Path, default=Path("report"))
+    p.set_defaults(func=cmd_report)
 
     p = sub.add_parser("run", help="run the benchmark for one model")
     add_run_arguments(p)

@@ -1,0 +1,198 @@
+"""The numbers of the report, as pure functions of run records (paper section 4).
+
+Every rate comes with its sample count and a 95 % Wilson interval, so a reader sees what is
+noise. Tables are sorted as in the paper (by overall success, best first).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections import defaultdict
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from meceng.eval.categories import CATEGORIES
+
+RIGID_COLUMNS = (
+    ("choose_components", "comp."),
+    ("solver_success", "solver"),
+    ("topology_match", "topol."),
+    ("solution_match", "numsol"),
+    ("graph_content_match", "graph"),
+    ("overall", "overall"),
+)
+
+
+def wilson(successes: int, n: int, z: float = 1.959963984540054) -> tuple[float, float]:
+    """95 % Wilson score interval of a binomial proportion; (0, 1) for n = 0."""
+    if n == 0:
+        return 0.0, 1.0
+    p = successes / n
+    denominator = 1 + z * z / n
+    centre = (p + z * z / (2 * n)) / denominator
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+@dataclass(frozen=True)
+class Rate:
+    passed: int
+    n: int
+
+    @property
+    def value(self) -> float | None:
+        return self.passed / self.n if self.n else None
+
+    @property
+    def interval(self) -> tuple[float, float]:
+        return wilson(self.passed, self.n)
+
+    def text(self) -> str:
+        if not self.n:
+            return "–"
+        low, high = self.interval
+        return f"{100 * self.value:.1f} [{100 * low:.0f}–{100 * high:.0f}]"
+
+    def to_json(self) -> dict[str, Any]:
+        low, high = self.interval
+        return {"passed": self.passed, "n": self.n, "rate": self.value, "ci95": [low, high]}
+
+
+@dataclass(frozen=True)
+class Run:
+    path: Path
+    settings: dict[str, Any]
+    summary: dict[str, Any]
+    tasks: list[dict[str, Any]]
+
+    @property
+    def model(self) -> str:
+        return str(self.settings["llm"]["model"])
+
+    @property
+    def temperature(self) -> float:
+        return float(self.settings["llm"]["temperature"])
+
+    @property
+    def think(self) -> str:
+        return str(self.settings["llm"]["think"])
+
+    @property
+    def select_template(self) -> str:
+        return str(self.settings["prompt"]["select_template"])
+
+    @property
+    def code_template(self) -> str:
+        return str(self.settings["prompt"]["code_template"])
+
+    @property
+    def label(self) -> str:
+        return (f"{self.model} T={self.temperature:g} think={self.think} "
+                f"{self.select_template}/{self.code_template}")
+
+    def graded(self) -> list[dict[str, Any]]:
+        """Task records that say something about the model (infrastructure failures left out)."""
+        return [t for t in self.tasks if t.get("first_failure") != "infrastructure"]
+
+
+def load_runs(paths: list[Path]) -> list[Run]:
+    """Run folders, run.json files, or folders holding run folders (a sweep's --out)."""
+    files: list[Path] = []
+    for path in paths:
+        if path.is_file():
+            files.append(path)
+        elif (path / "run.json").exists():
+            files.append(path / "run.json")
+        elif path.is_dir():
+            files.extend(sorted(path.glob("*/run.json")))
+        else:
+            raise FileNotFoundError(f"{path}: no run.json there")
+    if not files:
+        raise FileNotFoundError("no run.json found in " + ", ".join(map(str, paths)))
+    runs = []
+    for file in files:
+        data = json.loads(file.read_text())
+        runs.append(Run(file, data["settings"], data["summary"], data["tasks"]))
+    return runs
+
+
+def stage_rate(tasks: list[dict[str, Any]], stage: str) -> Rate:
+    if stage == "overall":
+        return Rate(sum(1 for t in tasks if t.get("overall")), len(tasks))
+    passed = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage and s["passed"])
+    return Rate(passed, len(tasks))
+
+
+def stage_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Table 2: success per stage per run, sorted by overall success."""
+    rows = []
+    for run in runs:
+        tasks = run.graded()
+        rows.append({"run": run.label, "model": run.model, "n": len(tasks),
+                     "infrastructure_failures": len(run.tasks) - len(tasks),
+                     **{key: stage_rate(tasks, key) for key, _ in RIGID_COLUMNS}})
+    return sorted(rows, key=lambda r: -(r["overall"].value or 0.0))
+
+
+def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Table 4: per model and thinking setting: overall, tokens, LLM time."""
+    groups: dict[tuple[str, str], list[Run]] = defaultdict(list)
+    for run in runs:
+        groups[(run.model, run.think)].append(run)
+    rows = []
+    for (model, think), members in sorted(groups.items()):
+        tasks = [t for r in members for t in r.graded()]
+        completion = [t.get("tokens", {}).get("completion", 0) for t in tasks]
+        llm_time = sum(t.get("timing", {}).get("llm_s", 0.0) for t in tasks)
+        rows.append({"model": model, "think": think, "n": len(tasks), "overall": stage_rate(tasks, "overall"),
+                     "completion_tokens_mean": sum(completion) / len(completion) if completion else 0.0,
+                     "llm_time_min": llm_time / 60})
+    return rows
+
+
+def error_category_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Table 5: per model, graph-content error categories (once per task), proportions, means."""
+    groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for run in runs:
+        groups[run.model].extend(run.graded())
+    rows = []
+    for model, tasks in sorted(groups.items()):
+        counts = {c: sum(1 for t in tasks if c in t.get("error_categories", [])) for c in CATEGORIES}
+        total = sum(counts.values())
+        rows.append({"model": model, "n": len(tasks), "counts": counts, "total": total,
+                     "proportions": {c: (counts[c] / total if total else 0.0) for c in CATEGORIES},
+                     "mean_per_task": total / len(tasks) if tasks else 0.0})
+    return rows
+
+
+def series(runs: list[Run], axis: str) -> dict[str, dict[str, Rate]]:
+    """model -> value of ``axis`` (temperature, think, select_template, code_template) -> overall."""
+    out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
+    for run in runs:
+        key = f"{run.temperature:g}" if axis == "temperature" else str(getattr(run, axis))
+        out[run.model][key].extend(run.graded())
+    return {m: {k: stage_rate(v, "overall") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
+
+
+def component_series(runs: list[Run]) -> dict[str, dict[str, Rate]]:
+    """model -> selection template -> component-selection rate (Fig. 9, solid bars)."""
+    out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
+    for run in runs:
+        out[run.model][run.select_template].extend(run.graded())
+    return {m: {k: stage_rate(v, "choose_components") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
+
+
+def difficulty(runs: list[Run]) -> list[dict[str, Any]]:
+    """Fig. 11: per task model, 1 - mean overall success over all runs; hardest first."""
+    groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for run in runs:
+        for t in run.graded():
+            groups[t["slug"]].append(t)
+    rows = []
+    for slug, tasks in groups.items():
+        rate = stage_rate(tasks, "overall")
+        rows.append({"slug": slug, "level": tasks[0]["level"], "id": tasks[0].get("id"), "n": len(tasks),
+                     "overall": rate, "difficulty": 1 - (rate.value or 0.0)})
+    return sorted(rows, key=lambda r: (-r["difficulty"], r["id"] or 0))

@@ -1,0 +1,182 @@
+"""``meceng report``: HTML (images embedded), Markdown and PNGs from one or more runs.
+
+Sections follow the paper's section 4: success per stage (Table 2), thinking (Table 4), error
+categories (Table 5), temperature (Fig. 8), prompt variants (Fig. 9-10), task difficulty
+(Fig. 11). Rates show n and a 95 % Wilson interval. Plots are drawn headless (Agg).
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import json
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+from meceng.eval.categories import CATEGORIES
+from meceng.eval.report import (
+    RIGID_COLUMNS,
+    Rate,
+    Run,
+    component_series,
+    difficulty,
+    error_category_table,
+    load_runs,
+    series,
+    stage_table,
+    thinking_table,
+)
+
+
+def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel: str) -> None:
+    """Grouped bars with Wilson error bars: one group per model, one bar per key."""
+    keys = sorted({k for d in groups.values() for k in d})
+    fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(groups) * max(1, len(keys))), 4))
+    width = 0.8 / max(1, len(keys))
+    for j, key in enumerate(keys):
+        xs, ys, low, high = [], [], [], []
+        for i, model in enumerate(groups):
+            rate = groups[model].get(key)
+            if rate is None or rate.value is None:
+                continue
+            lo, hi = rate.interval
+            xs.append(i + j * width)
+            ys.append(100 * rate.value)
+            low.append(100 * (rate.value - lo))
+            high.append(100 * (hi - rate.value))
+        ax.bar(xs, ys, width, yerr=[low, high], capsize=3, label=key)
+    ax.set_xticks([i + width * (len(keys) - 1) / 2 for i in range(len(groups))], list(groups), rotation=20)
+    ax.set_ylim(0, 105)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def _line_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, xlabel: str) -> None:
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for model, rates in groups.items():
+        xs = [float(k) for k in rates]
+        ys = [100 * (r.value or 0.0) for r in rates.values()]
+        ax.errorbar(xs, ys, yerr=[[100 * ((r.value or 0) - r.interval[0]) for r in rates.values()],
+                                  [100 * (r.interval[1] - (r.value or 0)) for r in rates.values()]],
+                    marker="o", capsize=3, label=model)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("overall success (%)")
+    ax.set_ylim(0, 105)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def _difficulty_plot(path: Path, rows: list[dict[str, Any]]) -> None:
+    fig, ax = plt.subplots(figsize=(7, max(3, 0.25 * len(rows))))
+    ax.barh([r["slug"] for r in rows][::-1], [100 * r["difficulty"] for r in rows][::-1])
+    ax.set_xlabel("difficulty = 1 - mean overall success (%)")
+    ax.set_xlim(0, 100)
+    ax.set_title("Difficulty per task model")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def _table(headers: list[str], rows: list[list[str]]) -> tuple[str, str]:
+    """The same table as Markdown and as HTML."""
+    md = ["| " + " | ".join(headers) + " |", "|" + "---|" * len(headers)]
+    md += ["| " + " | ".join(r) + " |" for r in rows]
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in headers)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows)
+    return "\n".join(md), f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def build_report(paths: list[Path], out: Path) -> dict[str, Path]:
+    """Write report.html, report.md, report.json and the PNGs into ``out``; returns their paths."""
+    runs: list[Run] = load_runs(paths)
+    out.mkdir(parents=True, exist_ok=True)
+    sections: list[tuple[str, str, str, str | None]] = []  # title, markdown, html, png name
+
+    stages = stage_table(runs)
+    headers = ["run", "n", *[label for _, label in RIGID_COLUMNS]]
+    rows = [[r["run"], str(r["n"]), *[r[k].text() for k, _ in RIGID_COLUMNS]] for r in stages]
+    md, ht = _table(headers, rows)
+    _bar_plot(out / "stages.png", {r["run"]: {label: r[k] for k, label in RIGID_COLUMNS} for r in stages},
+              "Success rate per stage", "success (%)")
+    sections.append(("Success per stage (Table 2)", md, ht, "stages.png"))
+
+    thinking = thinking_table(runs)
+    md, ht = _table(["model", "think", "n", "overall", "completion tokens (mean)", "LLM time (min)"],
+                    [[r["model"], r["think"], str(r["n"]), r["overall"].text(), f"{r['completion_tokens_mean']:.0f}",
+                      f"{r['llm_time_min']:.2f}"] for r in thinking])
+    sections.append(("Thinking (Table 4)", md, ht, None))
+
+    categories = error_category_table(runs)
+    md, ht = _table(["model", "n", *CATEGORIES, "mean per task"],
+                    [[r["model"], str(r["n"]),
+                      *[f"{r['counts'][c]} ({100 * r['proportions'][c]:.0f} %)" for c in CATEGORIES],
+                      f"{r['mean_per_task']:.2f}"] for r in categories])
+    sections.append(("Graph content error categories (Table 5)", md, ht, None))
+
+    temperature = series(runs, "temperature")
+    if any(len(v) > 1 for v in temperature.values()):
+        _line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
+    md, ht = _table(["model", "temperature", "overall"],
+                    [[m, k, r.text()] for m, d in temperature.items() for k, r in d.items()])
+    sections.append(("Temperature (Fig. 8)", md, ht,
+                     "temperature.png" if (out / "temperature.png").exists() else None))
+
+    select = component_series(runs)
+    select_overall = series(runs, "select_template")
+    _bar_plot(out / "select_templates.png", select, "Component selection per selection prompt", "selection (%)")
+    md, ht = _table(["model", "selection prompt", "component selection", "overall"],
+                    [[m, k, r.text(), select_overall[m][k].text()] for m, d in select.items() for k, r in d.items()])
+    sections.append(("Component-selection prompts (Fig. 9)", md, ht, "select_templates.png"))
+
+    code = series(runs, "code_template")
+    _bar_plot(out / "code_templates.png", code, "Overall success per code prompt", "overall (%)")
+    md, ht = _table(["model", "code prompt", "overall"],
+                    [[m, k, r.text()] for m, d in code.items() for k, r in d.items()])
+    sections.append(("Code-generation prompts (Fig. 10)", md, ht, "code_templates.png"))
+
+    hard = difficulty(runs)
+    _difficulty_plot(out / "difficulty.png", hard)
+    md, ht = _table(["task model", "level", "n", "overall", "difficulty"],
+                    [[r["slug"], str(r["level"]), str(r["n"]), r["overall"].text(), f"{100 * r['difficulty']:.1f}"]
+                     for r in hard])
+    sections.append(("Difficulty per task model (Fig. 11)", md, ht, "difficulty.png"))
+
+    intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
+             "Wilson interval in brackets; infrastructure failures are left out of the rates.")
+    md_doc = ["# MecEng report", "", intro, ""]
+    html_doc = ["<!doctype html><html><head><meta charset='utf-8'><title>MecEng report</title>",
+                "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}table{border-collapse:collapse;"
+                "font-size:13px}td,th{border:1px solid #ccc;padding:3px 6px}th{background:#eef}</style></head><body>",
+                "<h1>MecEng report</h1>", f"<p>{html.escape(intro)}</p>"]
+    for title, md, ht, png in sections:
+        md_doc += [f"## {title}", "", md, ""]
+        html_doc += [f"<h2>{html.escape(title)}</h2>", ht]
+        if png:
+            md_doc += [f"![{title}]({png})", ""]
+            data = base64.b64encode((out / png).read_bytes()).decode()
+            html_doc.append(f"<p><img alt='{html.escape(title)}' src='data:image/png;base64,{data}'></p>")
+    html_doc.append("</body></html>")
+    (out / "report.md").write_text("\n".join(md_doc))
+    (out / "report.html").write_text("\n".join(html_doc))
+    machine = {
+        "runs": [str(r.path) for r in runs],
+        "stages": [{**{k: v for k, v in r.items() if not isinstance(v, Rate)},
+                    **{k: r[k].to_json() for k, _ in RIGID_COLUMNS}} for r in stages],
+        "error_categories": categories,
+        "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
+                       for r in hard],
+    }
+    (out / "report.json").write_text(json.dumps(machine, indent=1))
+    return {"html": out / "report.html", "markdown": out / "report.md", "json": out / "report.json"}
