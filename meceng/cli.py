@@ -243,6 +243,18 @@ def cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_rescore(args: argparse.Namespace) -> int:
+    from meceng.pipeline import rescore
+
+    run_dir: Path = args.run_dir if args.run_dir.is_dir() else args.run_dir.parent
+    if not (run_dir / "run.json").exists():
+        print(f"error: {run_dir} holds no run.json", file=sys.stderr)
+        return 2
+    path = asyncio.run(rescore(run_dir))
+    print_summary(path)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="meceng", description="MecEng: LLMs building multibody models")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -275,6 +287,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
     p.add_argument("--out", type=Path, default=Path("report"))
     p.set_defaults(func=cmd_report)
+
+    p = sub.add_parser("rescore", help="grade the saved programs of a run again, without any LLM call")
+    p.add_argument("run_dir", type=Path)
+    p.set_defaults(func=cmd_rescore)
 
     p = sub.add_parser("run", help="run the benchmark for one model")
     add_run_arguments(p)

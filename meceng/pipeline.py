@@ -29,6 +29,7 @@ from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
 from meceng.agents.catalog import Catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
+from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
 from meceng.tasks.base import TaskInstance, program_header
@@ -266,6 +267,7 @@ def task_record(
             "completion": sum(m.get("completion_tokens", 0) for m in (selection.meta, generation.meta)),
         },
         "files": files,
+        "evaluator": EVALUATOR_VERSION,
     }
 
 
@@ -379,3 +381,38 @@ async def evaluate_program(
     catalog = catalog or rigid_catalog()
     evaluator = Evaluator(2, limits or ExecutionLimits(), Tolerances(), catalog)
     return await evaluator.evaluate(instance, code, selected, None)
+
+
+async def rescore(run_dir: Path, registry: TaskRegistry | None = None, catalog: Catalog | None = None,
+                  workers: int = max(1, os.cpu_count() or 1)) -> Path:
+    """Grade the saved programs of a run again with the current evaluator; no LLM is called.
+
+    The LLM answers (selection, generation) stay as they were; stages, verdict, categories and
+    the summary are recomputed and the record says which evaluator graded it. run.json is
+    replaced atomically; the previous one is kept as run.previous.json.
+    """
+    registry = registry or default_registry()
+    catalog = catalog or rigid_catalog()
+    run_path = run_dir / "run.json"
+    run = json.loads(run_path.read_text())
+    evaluator = Evaluator(workers, ExecutionLimits(timeout_s=run["settings"]["pipeline"]["exec_timeout_s"]),
+                          Tolerances(solution=run["settings"]["pipeline"]["solution_tolerance"]), catalog)
+
+    async def one(record: dict[str, Any]) -> dict[str, Any]:
+        if record.get("first_failure") == "infrastructure" or "generation" not in record:
+            return record
+        instance = registry.get(record["slug"]).instance(record["seed"])
+        generation = record["generation"]
+        verdict, candidate, reference = await evaluator.evaluate(
+            instance, generation.get("code"), tuple(record["selection"].get("names", ())), generation.get("error"))
+        updated = {**record, **verdict.to_json(), "execution": candidate.summary(),
+                   "reference_execution": reference.summary(), "evaluator": EVALUATOR_VERSION}
+        return updated
+
+    records = await asyncio.gather(*(one(r) for r in run["tasks"]))
+    run["tasks"] = list(records)
+    run["summary"] = summarize(run["tasks"])
+    run["rescored"] = {"evaluator": EVALUATOR_VERSION, "at": dt.datetime.now(dt.UTC).isoformat()}
+    os.replace(run_path, run_dir / "run.previous.json")
+    _write_atomic(run_path, json.dumps(run, indent=1, default=str))
+    return run_path

@@ -73,3 +73,25 @@ def test_existing_run_folder_is_not_overwritten(tmp_path: Path) -> None:
     again = start(tmp_path, "once")
     assert again.wait(timeout=600) == 2
     assert "--resume" in (again.stderr.read() if again.stderr else "")
+
+
+def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "run", "--model", "gold", "--only", "3,11",
+                           "--variations", "1", "--out", str(tmp_path), "--name", "r", "--no-progress"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    run_json = tmp_path / "r" / "run.json"
+    run = json.loads(run_json.read_text())
+    # tamper with a saved program's record: the rescore must grade the code it finds
+    record = run["tasks"][0]
+    record["generation"]["code"] = record["generation"]["code"].replace("mbs.Assemble()", "raise ValueError('x')")
+    run_json.write_text(json.dumps(run))
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r")],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    after = json.loads(run_json.read_text())
+    assert after["tasks"][0]["overall"] is False and after["tasks"][0]["first_failure"] == "finished_assemble"
+    assert after["tasks"][1]["overall"] is True
+    assert all(t["evaluator"] for t in after["tasks"]) and "rescored" in after
+    assert (tmp_path / "r" / "responses.jsonl").read_text().count("\n") == 4  # no new LLM call
+    assert (tmp_path / "r" / "run.previous.json").exists()
