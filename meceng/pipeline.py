@@ -13,6 +13,7 @@ from __future__ import annotations
 import asyncio
 import datetime as dt
 import json
+import logging
 import os
 import platform
 import re
@@ -334,6 +335,7 @@ async def run_benchmark(
                           Tolerances(solution=settings.solution_tolerance), catalog)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) + settings.workers + 2)
+    log_handler = _attach_run_log(run_dir / "log.jsonl")
     log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(done), model=settings.llm.model)
 
     from meceng.progress import progress_bar
@@ -352,7 +354,7 @@ async def run_benchmark(
             records.append(record)
             log.info("task done", task=instance.key, overall=record["overall"],
                      first_failure=record["first_failure"])
-            advance(record["overall"])
+            advance(record["overall"], int(record.get("tokens", {}).get("completion", 0)))
 
         try:
             await asyncio.gather(*(one(i) for i in todo))
@@ -367,7 +369,22 @@ async def run_benchmark(
              "resumed_tasks": len(done)}
     path = writer.finish(settings, records, started, time.perf_counter() - t0, extra)
     log.info("run finished", run_json=str(path))
+    logging.getLogger("meceng").removeHandler(log_handler)
+    log_handler.close()
     return path
+
+
+def _attach_run_log(path: Path) -> logging.Handler:
+    """JSON lines of this run's log events into the run folder, for as long as the run lasts."""
+    handler = logging.FileHandler(path)
+    handler.setFormatter(structlog.stdlib.ProcessorFormatter(
+        processor=structlog.processors.JSONRenderer(),
+        foreign_pre_chain=[structlog.processors.add_log_level, structlog.processors.TimeStamper(fmt="iso")]))
+    logger = logging.getLogger("meceng")
+    logger.addHandler(handler)
+    if logger.level == logging.NOTSET or logger.level > logging.INFO:
+        logger.setLevel(logging.INFO)
+    return handler
 
 
 async def evaluate_program(

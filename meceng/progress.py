@@ -1,30 +1,48 @@
-"""A progress bar for long runs (rich), silent when disabled or not on a terminal."""
+"""A progress bar for long runs (rich): done/total, success so far, tokens/s, ETA.
+
+Silent when disabled or when stderr is not a terminal (CI, pipes).
+"""
 
 from __future__ import annotations
 
 import sys
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.progress import (
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
+)
+
+Advance = Callable[[bool, int], None]
 
 
 @contextmanager
-def progress_bar(total: int, title: str, enabled: bool = True) -> Iterator[Callable[[bool], None]]:
-    """Yields ``advance(success)``; the bar shows done/total and the success count so far."""
+def progress_bar(total: int, title: str, enabled: bool = True) -> Iterator[Advance]:
+    """Yields ``advance(success, tokens)`` to call once per finished task."""
     if not enabled or not sys.stderr.isatty():
-        yield lambda success: None
+        yield lambda success, tokens=0: None
         return
     passed = 0
+    tokens_total = 0
+    t0 = time.perf_counter()
     with Progress(
         TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
-        TextColumn("ok {task.fields[passed]}"), TimeElapsedColumn(), transient=False,
+        TextColumn("ok {task.fields[passed]}"), TextColumn("{task.fields[rate]} tok/s"),
+        TimeElapsedColumn(), TextColumn("eta"), TimeRemainingColumn(), transient=False,
     ) as progress:
-        task = progress.add_task(title, total=total, passed=0)
+        task = progress.add_task(title, total=total, passed=0, rate="0")
 
-        def advance(success: bool) -> None:
-            nonlocal passed
+        def advance(success: bool, tokens: int = 0) -> None:
+            nonlocal passed, tokens_total
             passed += int(bool(success))
-            progress.update(task, advance=1, passed=passed)
+            tokens_total += tokens
+            rate = tokens_total / max(time.perf_counter() - t0, 1e-9)
+            progress.update(task, advance=1, passed=passed, rate=f"{rate:.0f}")
 
         yield advance
