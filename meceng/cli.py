@@ -235,7 +235,7 @@ def cmd_report(args: argparse.Namespace) -> int:
 
     t0 = time.perf_counter()
     try:
-        files = build_report(args.runs, args.out)
+        files = build_report(args.runs, args.out, args.models)
     except (FileNotFoundError, ValueError, KeyError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -286,6 +286,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("report", help="HTML, Markdown and PNG report from runs")
     p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
     p.add_argument("--out", type=Path, default=Path("report"))
+    p.add_argument("--models", type=Path, default=None,
+                   help="sweep spec whose [[models]] give release (YYYY-MM-DD) and size_b, for Fig. 7")
     p.set_defaults(func=cmd_report)
 
     p = sub.add_parser("rescore", help="grade the saved programs of a run again, without any LLM call")

@@ -35,7 +35,7 @@ from meceng.eval.report import (
 
 def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel: str) -> None:
     """Grouped bars with Wilson error bars: one group per model, one bar per key."""
-    keys = sorted({k for d in groups.values() for k in d})
+    keys = list(dict.fromkeys(k for d in groups.values() for k in d))  # first-seen order
     fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(groups) * max(1, len(keys))), 4))
     width = 0.8 / max(1, len(keys))
     for j, key in enumerate(keys):
@@ -98,7 +98,34 @@ def _table(headers: list[str], rows: list[list[str]]) -> tuple[str, str]:
     return "\n".join(md), f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 
-def build_report(paths: list[Path], out: Path) -> dict[str, Path]:
+def _release_plot(path: Path, points: list[tuple[str, str, float | None, float]]) -> None:
+    import datetime as dt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for model, release, size, rate in points:
+        when = dt.date.fromisoformat(release)
+        ax.scatter([when], [100 * rate], s=20 + 3 * (size or 10))
+        ax.annotate(model, (when, 100 * rate), fontsize=7, xytext=(3, 3), textcoords="offset points")
+    ax.set_ylabel("overall success (%)")
+    ax.set_ylim(0, 105)
+    ax.set_title("Overall success vs release date (marker size: parameters)")
+    fig.autofmt_xdate()
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def model_facts(path: Path | None) -> dict[str, tuple[str, float | None]]:
+    """model name -> (release date, size in B) from a sweep spec's [[models]] entries."""
+    if path is None:
+        return {}
+    import tomllib
+
+    data = tomllib.loads(path.read_text())
+    return {m["name"]: (str(m["release"]), m.get("size_b")) for m in data.get("models", []) if m.get("release")}
+
+
+def build_report(paths: list[Path], out: Path, models_file: Path | None = None) -> dict[str, Path]:
     """Write report.html, report.md, report.json and the PNGs into ``out``; returns their paths."""
     runs: list[Run] = load_runs(paths)
     out.mkdir(parents=True, exist_ok=True)
@@ -152,6 +179,20 @@ def build_report(paths: list[Path], out: Path) -> dict[str, Path]:
                     [[r["slug"], str(r["level"]), str(r["n"]), r["overall"].text(), f"{100 * r['difficulty']:.1f}"]
                      for r in hard])
     sections.append(("Difficulty per task model (Fig. 11)", md, ht, "difficulty.png"))
+
+    facts = model_facts(models_file)
+    if facts:
+        overall = series(runs, "think")
+        points = []
+        for model, by_think in overall.items():
+            if model in facts and "False" in by_think and by_think["False"].value is not None:
+                release, size = facts[model]
+                points.append((model, release, size, by_think["False"].value))
+        if points:
+            _release_plot(out / "release.png", points)
+            md, ht = _table(["model", "release", "size (B)", "overall (no thinking)"],
+                            [[m, r, "" if s is None else f"{s:g}", f"{100 * v:.1f}"] for m, r, s, v in points])
+            sections.insert(1, ("Success vs release date (Fig. 7)", md, ht, "release.png"))
 
     intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
              "Wilson interval in brackets; infrastructure failures are left out of the rates.")

@@ -128,9 +128,11 @@ def stage_rate(tasks: list[dict[str, Any]], stage: str) -> Rate:
 def stage_table(runs: list[Run]) -> list[dict[str, Any]]:
     """Table 2: success per stage per run, sorted by overall success."""
     rows = []
+    labels = [run.label for run in runs]
     for run in runs:
         tasks = run.graded()
-        rows.append({"run": run.label, "model": run.model, "n": len(tasks),
+        label = run.label if labels.count(run.label) == 1 else f"{run.label} ({run.path.parent.name})"
+        rows.append({"run": label, "model": run.model, "n": len(tasks),
                      "infrastructure_failures": len(run.tasks) - len(tasks),
                      **{key: stage_rate(tasks, key) for key, _ in RIGID_COLUMNS}})
     return sorted(rows, key=lambda r: -(r["overall"].value or 0.0))
