@@ -773,7 +773,7 @@ JOINT_PD_CONTROL = Component(
         - Signature exactly (mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset) -> float;
           one revolute joint + one torsional spring-damper (same items, position and axis) per driven joint, each
           with its own function (e.g. created by a factory function with the joint's trajectory data).
-        - The solver includes the connector in its Jacobian, so stiff gains converge well.
+        - The connector enters the solver's Jacobian, so also stiff gains converge without special solver settings.
     """),
     example=_example("""
         # a link (long side along local x) on a revolute joint about global z, moved from 0 to 60 degrees by
