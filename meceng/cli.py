@@ -70,6 +70,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--name", default=None, help="run folder name (default: time stamp + model)")
     parser.add_argument("--workers", type=_positive_int, default=None, help="parallel program executions")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
+    parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
+                        help="fork: warm fork server (default); subprocess: a cold interpreter per program")
     parser.add_argument("--select-template", default="CI1")
     parser.add_argument("--code-template", default="MBS1")
     parser.add_argument("--no-progress", action="store_true")
@@ -108,7 +110,7 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,
-        progress=not args.no_progress,
+        progress=not args.no_progress, executor=args.executor,
     )
 
 

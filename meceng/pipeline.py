@@ -35,7 +35,8 @@ from meceng.eval.aggregate import summarize
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
 from meceng.tasks.base import TaskInstance, program_header
 from meceng.tasks.registry import TaskRegistry, default_registry
-from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.executor import Execution, ExecutionLimits, child_env, execute
+from meceng.tools.warm import WarmPool
 
 log = structlog.get_logger("meceng.pipeline")
 
@@ -58,6 +59,7 @@ class RunSettings:
     solution_tolerance: float = 1e-5
     progress: bool = True
     resume: bool = False
+    executor: str = "fork"
 
     @classmethod
     def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
@@ -71,12 +73,14 @@ class RunSettings:
             workers=pipeline["workers"], exec_timeout_s=pipeline["exec_timeout_s"],
             solution_tolerance=pipeline["solution_tolerance"], select_template=data["prompt"]["select_template"],
             code_template=data["prompt"]["code_template"], resume=True,
+            executor=pipeline.get("executor", "fork"),
         )
 
     def to_json(self) -> dict[str, Any]:
         return {
             "llm": self.llm.to_json(),
             "pipeline": {
+                "executor": self.executor,
                 "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
                 "solution_tolerance": self.solution_tolerance,
@@ -103,8 +107,10 @@ class ReferenceCache:
 class Evaluator:
     """Runs candidate and reference programs in isolation (bounded by ``workers``) and grades."""
 
-    def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog) -> None:
+    def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog,
+                 pool: WarmPool | None = None) -> None:
         self.slots = asyncio.Semaphore(workers)
+        self.pool = pool
         self.limits = limits
         self.tolerances = tolerances
         self.catalog = catalog
@@ -112,7 +118,7 @@ class Evaluator:
 
     async def _execute(self, program: str, instance: TaskInstance, check: bool) -> Execution:
         async with self.slots:
-            return await execute(program, instance.sim.block(), self.limits, check=check)
+            return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self._execute(instance.reference_program, instance, check=False)
@@ -331,8 +337,11 @@ async def run_benchmark(
     own_backend = backend is None
     cache = ResponseCache(run_dir / "responses.jsonl")
     backend = CachedBackend(backend or make_backend(settings.llm), cache, settings.llm)
+    if settings.executor not in ("fork", "subprocess"):
+        raise ValueError(f"unknown executor {settings.executor!r} (fork or subprocess)")
+    pool = WarmPool(child_env()) if settings.executor == "fork" else None
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
-                          Tolerances(solution=settings.solution_tolerance), catalog)
+                          Tolerances(solution=settings.solution_tolerance), catalog, pool)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) + settings.workers + 2)
     log_handler = _attach_run_log(run_dir / "log.jsonl")
@@ -359,6 +368,8 @@ async def run_benchmark(
         try:
             await asyncio.gather(*(one(i) for i in todo))
         finally:
+            if pool is not None:
+                await pool.close()
             if own_backend:
                 await backend.aclose()
             else:

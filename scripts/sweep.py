@@ -46,6 +46,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--batch-size", type=_positive_int)
     p.add_argument("--workers", type=_positive_int)
     p.add_argument("--timeout", type=float, help="seconds per program execution")
+    p.add_argument("--executor", choices=("fork", "subprocess"), default="fork")
     p.add_argument("--out", type=Path)
     p.add_argument("--name", default=None, help="run folder name (single grid point only)")
     p.add_argument("--no-progress", action="store_true")
@@ -105,7 +106,7 @@ def main(argv: list[str] | None = None) -> int:
             out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
             exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
             code_template=point.code_template, progress=not args.no_progress,
-            resume=(run_dir / "journal.jsonl").exists(),
+            resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
         )
         try:
             path = asyncio.run(run_benchmark(settings))

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from meceng.tools.safety import check_program
+from meceng.tools.warm import WarmPool
 
 #: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
 ENV_KEEP = ("PATH", "HOME", "LANG", "LC_ALL", "PYTHONPATH", "VIRTUAL_ENV", "TMPDIR", "SYSTEMROOT")
@@ -146,8 +147,13 @@ async def execute(
     limits: ExecutionLimits | None = None,
     scratch_root: Path | None = None,
     check: bool = True,
+    pool: WarmPool | None = None,
 ) -> Execution:
-    """Statically check, then run ``program`` with ``sim_block`` as its solver block."""
+    """Statically check, then run ``program`` with ``sim_block`` as its solver block.
+
+    With a ``pool`` the child is forked from the warm fork server, otherwise a cold interpreter
+    is started; both get the same isolation.
+    """
     limits = limits or ExecutionLimits()
     if check:
         verdict = check_program(program)
@@ -156,6 +162,8 @@ async def execute(
             return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
     scratch = Path(tempfile.mkdtemp(prefix="meceng-", dir=scratch_root))
     try:
+        if pool is not None:
+            return await _run_warm(scratch, program, sim_block, limits, pool)
         return await _run_in(scratch, program, sim_block, limits)
     finally:
         if not limits.keep_scratch:
@@ -163,11 +171,7 @@ async def execute(
 
 
 async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> Execution:
-    job = scratch / "job.json"
-    token = secrets.token_hex(16)
-    job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
-                               "guard": limits.guard, "isolate_network": limits.isolate_network}))
-    (scratch / "program.py").write_text(program)
+    job, token = _write_job(scratch, program, sim_block, limits)
     t0 = time.perf_counter()
     proc = await asyncio.create_subprocess_exec(
         sys.executable,
@@ -201,6 +205,40 @@ async def _run_in(scratch: Path, program: str, sim_block: str, limits: Execution
         stdout, stderr = b"", b"[output not collected: a child kept the pipes open]"
     wall = time.perf_counter() - t0
     return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits, token)
+
+
+def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> tuple[Path, str]:
+    job = scratch / "job.json"
+    token = secrets.token_hex(16)
+    job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
+                               "guard": limits.guard, "isolate_network": limits.isolate_network}))
+    (scratch / "program.py").write_text(program)
+    return job, token
+
+
+def _read_bounded_file(path: Path, limit: int) -> bytes:
+    if not path.exists():
+        return b""
+    size = path.stat().st_size
+    half = max(limit // 2, 1)
+    with path.open("rb") as f:
+        if size <= limit:
+            return f.read()
+        head = f.read(half)
+        f.seek(size - half)
+        return head + f"\n[... {size - 2 * half} bytes dropped ...]\n".encode() + f.read()
+
+
+async def _run_warm(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
+                    pool: WarmPool) -> Execution:
+    job, token = _write_job(scratch, program, sim_block, limits)
+    t0 = time.perf_counter()
+    rlimits = {"memory": limits.memory_bytes, "cpu": int(limits.timeout_s) + 5, "file": limits.file_bytes}
+    returncode, timed_out = await pool.run(job, child_env(), rlimits, limits.timeout_s)
+    wall = time.perf_counter() - t0
+    stdout = _read_bounded_file(scratch / "stdout.txt", limits.output_bytes)
+    stderr = _read_bounded_file(scratch / "stderr.txt", limits.output_bytes)
+    return _collect(scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
 
 
 def _collect(

@@ -313,7 +313,11 @@ def main() -> None:
     if len(sys.argv) != 2:
         sys.stderr.write("usage: python -m meceng.tools.runner JOB.json\n")
         raise SystemExit(2)
-    job_path = Path(sys.argv[1])
+    os._exit(enter(Path(sys.argv[1])))
+
+
+def enter(job_path: Path) -> int:
+    """Shared entry of the cold and the warm child: network isolation, then the harness."""
     try:
         isolate = json.loads(job_path.read_text()).get("isolate_network", True)
     except (OSError, ValueError):
@@ -322,7 +326,8 @@ def main() -> None:
         os.environ["MECENG_NETWORK"] = unshare_network()
     code = run(job_path)
     sys.stdout.flush()
-    os._exit(code)
+    sys.stderr.flush()
+    return code
 
 
 if __name__ == "__main__":
