@@ -10,17 +10,26 @@ from typing import Any
 import structlog
 
 
+def get_logger(name: str) -> structlog.stdlib.BoundLogger:
+    """A structlog logger that writes through stdlib logging (logger ``name``).
+
+    Library code never prints: without :func:`configure_logging` (or a run's log file) events
+    below WARNING go nowhere, and no global structlog configuration is needed.
+    """
+    return structlog.wrap_logger(
+        logging.getLogger(name),
+        wrapper_class=structlog.stdlib.BoundLogger,
+        processors=[structlog.contextvars.merge_contextvars, structlog.processors.add_log_level,
+                    structlog.processors.TimeStamper(fmt="iso", utc=True),
+                    structlog.stdlib.ProcessorFormatter.wrap_for_formatter],
+    )
+
+
 def configure_logging(log_file: Path | None = None, level: str = "INFO", console: bool = True) -> None:
     """Route structlog through stdlib logging: JSON to ``log_file``, console renderer to stderr."""
     timestamper = structlog.processors.TimeStamper(fmt="iso", utc=True)
     shared: list[Any] = [structlog.contextvars.merge_contextvars, structlog.processors.add_log_level,
                          timestamper]
-    structlog.configure(
-        processors=[*shared, structlog.stdlib.ProcessorFormatter.wrap_for_formatter],
-        logger_factory=structlog.stdlib.LoggerFactory(),
-        wrapper_class=structlog.stdlib.BoundLogger,
-        cache_logger_on_first_use=False,
-    )
     root = logging.getLogger("meceng")
     root.handlers.clear()
     root.setLevel(level)

@@ -33,12 +33,13 @@ from meceng.agents.steps import Generation, Selection, choose_components, genera
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.logs import get_logger
 from meceng.tasks.base import TaskInstance, program_header
 from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import Execution, ExecutionLimits, child_env, execute
 from meceng.tools.warm import WarmPool
 
-log = structlog.get_logger("meceng.pipeline")
+log = get_logger("meceng.pipeline")
 
 
 @dataclass(frozen=True)
@@ -96,12 +97,15 @@ class ReferenceCache:
         self._run = run
         self._tasks: dict[str, asyncio.Task[Execution]] = {}
 
-    async def get(self, instance: TaskInstance) -> Execution:
+    def start(self, instance: TaskInstance) -> asyncio.Task[Execution]:
         task = self._tasks.get(instance.key)
         if task is None:
             task = asyncio.ensure_future(self._run(instance))
             self._tasks[instance.key] = task
-        return await asyncio.shield(task)
+        return task
+
+    async def get(self, instance: TaskInstance) -> Execution:
+        return await asyncio.shield(self.start(instance))
 
 
 class Evaluator:
@@ -122,6 +126,10 @@ class Evaluator:
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self._execute(instance.reference_program, instance, check=False)
+
+    def prefetch(self, instance: TaskInstance) -> None:
+        """Start the reference execution now, while the LLM is still busy with this task."""
+        self.references.start(instance)
 
     async def evaluate(
         self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None
@@ -145,25 +153,15 @@ def _safe_name(text: str) -> str:
 
 
 def versions() -> dict[str, str]:
-    import exudyn
-    import networkx
-    import numpy
+    """Package versions from their metadata (importing NGSolve here would cost a third of a second)."""
+    from importlib.metadata import PackageNotFoundError, version
 
-    out = {"python": platform.python_version(), "exudyn": exudyn.__version__, "numpy": numpy.__version__,
-           "networkx": networkx.__version__, "platform": platform.platform()}
-    try:
-        import ngsolve
-
-        out["ngsolve"] = ngsolve.__version__
-    except Exception:
-        pass
-    try:
-        from importlib.metadata import version
-
-        out["meceng"] = version("meceng")
-        out["ollama"] = version("ollama")
-    except Exception:
-        pass
+    out = {"python": platform.python_version(), "platform": platform.platform()}
+    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "networkx", "ollama", "pymeshlab"):
+        try:
+            out[package] = version(package)
+        except PackageNotFoundError:
+            out[package] = "not installed"
     return out
 
 
@@ -283,6 +281,7 @@ async def run_task(
     writer: RunWriter,
 ) -> dict[str, Any]:
     t0 = time.perf_counter()
+    evaluator.prefetch(instance)
     selection = await choose_components(backend, instance, catalog, settings.select_template)
     generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
     t_llm = time.perf_counter() - t0
@@ -343,8 +342,10 @@ async def run_benchmark(
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
                           Tolerances(solution=settings.solution_tolerance), catalog, pool)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
-    window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) + settings.workers + 2)
+    window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) * 2 + settings.workers + 2)
     log_handler = _attach_run_log(run_dir / "log.jsonl")
+    if pool is not None:
+        pool_start = asyncio.ensure_future(pool.start())  # the fork server boots while the LLM works
     log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(done), model=settings.llm.model)
 
     from meceng.progress import progress_bar
@@ -369,6 +370,7 @@ async def run_benchmark(
             await asyncio.gather(*(one(i) for i in todo))
         finally:
             if pool is not None:
+                await asyncio.gather(pool_start, return_exceptions=True)
                 await pool.close()
             if own_backend:
                 await backend.aclose()

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import asyncio
 import contextvars
+import heapq
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -21,10 +22,11 @@ from typing import Any, Protocol
 
 import httpx
 import ollama
-import structlog
 from tenacity import AsyncRetrying, RetryCallState, retry_if_exception, stop_after_attempt, wait_exponential
 
-log = structlog.get_logger(__name__)
+from meceng.logs import get_logger
+
+log = get_logger(__name__)
 
 TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504})
 
@@ -177,11 +179,53 @@ class GoldBackend:
         return None
 
 
+class PrioritySlots:
+    """A semaphore that serves waiters by priority, then arrival.
+
+    Code-generation requests (priority 0) of tasks that already chose their components go before
+    selection requests (priority 1) of new tasks: tasks finish depth-first, so their evaluation
+    overlaps the remaining inference instead of waiting for every selection to be done.
+    """
+
+    def __init__(self, capacity: int) -> None:
+        self.free = capacity
+        self._waiters: list[tuple[int, int, asyncio.Future[None]]] = []
+        self._seq = 0
+
+    async def acquire(self, priority: int) -> None:
+        if self.free > 0 and not self._waiters:
+            self.free -= 1
+            return
+        future: asyncio.Future[None] = asyncio.get_running_loop().create_future()
+        self._seq += 1
+        heapq.heappush(self._waiters, (priority, self._seq, future))
+        try:
+            await future
+        except asyncio.CancelledError:
+            if future.done() and not future.cancelled():
+                self.release()  # the slot was handed over just as we were cancelled
+            else:
+                self._waiters = [w for w in self._waiters if w[2] is not future]
+                heapq.heapify(self._waiters)
+            raise
+
+    def release(self) -> None:
+        while self._waiters:
+            _, _, future = heapq.heappop(self._waiters)
+            if not future.done():
+                future.set_result(None)  # hand the slot over directly
+                return
+        self.free += 1
+
+
+PRIORITY = {"code": 0, "select": 1}
+
+
 @dataclass
 class Endpoint:
     host: str
     client: Any
-    slots: asyncio.Semaphore
+    slots: PrioritySlots
     capacity: int
     in_flight: int = 0
     failures: int = 0
@@ -206,7 +250,7 @@ class OllamaBackend:
         factory = client_factory or (lambda host: ollama.AsyncClient(
             host=host, timeout=settings.timeout_s, event_hooks={"response": [_remember_retry_after]}))
         self.endpoints = [
-            Endpoint(host=h, client=factory(h), slots=asyncio.Semaphore(settings.batch_size),
+            Endpoint(host=h, client=factory(h), slots=PrioritySlots(settings.batch_size),
                      capacity=settings.batch_size)
             for h in settings.hosts
         ]
@@ -244,36 +288,40 @@ class OllamaBackend:
         async with self._pick_lock:
             endpoint = self._choose()
             endpoint.in_flight += 1
-        try:
-            async with endpoint.slots:
-                t0 = time.perf_counter()
-                _retry_after.set(None)
-                try:
-                    raw = await endpoint.client.chat(
-                        model=self.settings.model,
-                        messages=list(request.messages),
-                        stream=False,
-                        think=self.settings.think,
-                        options=self.settings.options(),
-                        keep_alive=self.settings.keep_alive,
-                    )
-                except ollama.ResponseError as exc:
-                    transient = exc.status_code in TRANSIENT_STATUS
-                    self._note_failure(endpoint, transient)
-                    raise LLMError(f"ollama error {exc.status_code}: {exc.error}", transient=transient,
-                                   status=exc.status_code, retry_after=_retry_after.get()) from exc
-                except (ConnectionError, httpx.TransportError, TimeoutError) as exc:
-                    self._note_failure(endpoint, True)
-                    raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
-                                   transient=True) from exc
-                except (ValueError, TypeError, KeyError) as exc:  # malformed body from the server
-                    self._note_failure(endpoint, True)
-                    raise LLMError(f"malformed response from {endpoint.host}: {exc}", transient=True) from exc
-                wall = time.perf_counter() - t0
+        await endpoint.slots.acquire(PRIORITY.get(request.purpose, 1))
+        try:  # the slot is held for exactly one request
+            raw, wall = await self._send(endpoint, request)
         finally:
+            endpoint.slots.release()
             endpoint.in_flight -= 1
         endpoint.failures = 0
         return _from_ollama(raw, wall, endpoint.host)
+
+    async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
+        t0 = time.perf_counter()
+        _retry_after.set(None)
+        try:
+            raw = await endpoint.client.chat(
+                model=self.settings.model,
+                messages=list(request.messages),
+                stream=False,
+                think=self.settings.think,
+                options=self.settings.options(),
+                keep_alive=self.settings.keep_alive,
+            )
+        except ollama.ResponseError as exc:
+            transient = exc.status_code in TRANSIENT_STATUS
+            self._note_failure(endpoint, transient)
+            raise LLMError(f"ollama error {exc.status_code}: {exc.error}", transient=transient,
+                           status=exc.status_code, retry_after=_retry_after.get()) from exc
+        except (ConnectionError, httpx.TransportError, TimeoutError) as exc:
+            self._note_failure(endpoint, True)
+            raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
+                           transient=True) from exc
+        except (ValueError, TypeError, KeyError) as exc:  # malformed body from the server
+            self._note_failure(endpoint, True)
+            raise LLMError(f"malformed response from {endpoint.host}: {exc}", transient=True) from exc
+        return raw, time.perf_counter() - t0
 
     def _note_failure(self, endpoint: Endpoint, transient: bool) -> None:
         if transient:

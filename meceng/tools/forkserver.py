@@ -20,7 +20,8 @@ import socket
 import sys
 from typing import Any
 
-PRELOAD = ("numpy", "exudyn", "exudyn.utilities", "exudyn.graphics", "exudyn.FEM", "ngsolve", "netgen.occ",
+PRELOAD = ("numpy", "exudyn", "exudyn.utilities", "exudyn.graphics", "exudyn.interactive", "exudyn.solver",
+           "exudyn.FEM", "ngsolve", "netgen.occ", "json", "traceback", "ctypes",
            "meceng.tools.runner", "meceng.tools.guard", "meceng.tools.warm")
 
 

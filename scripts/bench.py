@@ -1,0 +1,194 @@
+#!/usr/bin/env python
+"""Throughput figures of the harness on this machine, measured side by side in one run.
+
+1. isolation overhead per program, warm fork server vs cold interpreter (empty program and a
+   typical level 1 task), and the ratio;
+2. evaluation throughput (tasks/s) with 1 worker and with all cores, and the scaling ratio;
+3. scheduler efficiency against a fake Ollama with N slots and fixed latency: achieved requests/s
+   divided by N / latency, for N = 1, 4, 16;
+4. pipelining: wall time of a run with simulated LLM latency divided by
+   max(LLM-only time, evaluation-only time).
+
+    python scripts/bench.py [--json FILE] [--quick]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from fake_ollama import FakeOllama, chat_reply
+
+from meceng.agents.catalog import rigid_catalog
+from meceng.agents.llm import ChatRequest, LLMSettings, OllamaBackend, user_messages
+from meceng.agents.prompts import gold_code, gold_selection
+from meceng.agents.steps import choose_components, generate_code
+from meceng.eval.chain import Tolerances
+from meceng.pipeline import Evaluator, RunSettings, run_benchmark
+from meceng.tasks.registry import default_registry
+from meceng.tools.executor import ExecutionLimits, child_env, execute
+from meceng.tools.warm import WarmPool
+
+FIRST_TWELVE = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")
+
+
+async def isolation_overhead(repeats: int) -> dict[str, float]:
+    instance = default_registry().get("single_mass_oscillator").instance(0)
+    pool = WarmPool(child_env())
+    await pool.start()
+    out: dict[str, float] = {}
+    try:
+        for label, program in (("empty", ""), ("l1_task", instance.reference_program)):
+            for mode, use in (("warm", pool), ("cold", None)):
+                times = []
+                for _ in range(repeats):
+                    t0 = time.perf_counter()
+                    await execute(program, instance.sim.block(), check=False, pool=use)
+                    times.append(time.perf_counter() - t0)
+                out[f"{label}_{mode}_ms"] = 1000 * statistics.median(times)
+    finally:
+        await pool.close()
+    out["cold_over_warm_overhead"] = out["empty_cold_ms"] / out["empty_warm_ms"]
+    out["l1_cold_over_warm"] = out["l1_task_cold_ms"] / out["l1_task_warm_ms"]
+    return out
+
+
+async def _evaluate_all(instances, workers: int) -> float:
+    pool = WarmPool(child_env())
+    await pool.start()
+    evaluator = Evaluator(workers, ExecutionLimits(), Tolerances(), rigid_catalog(), pool)
+    t0 = time.perf_counter()
+    try:
+        verdicts = await asyncio.gather(*(evaluator.evaluate(i, i.reference_program, i.required_components, None)
+                                          for i in instances))
+    finally:
+        await pool.close()
+    assert all(v[0].overall for v in verdicts), "a gold program failed during the benchmark"
+    return time.perf_counter() - t0
+
+
+async def throughput(variations: int) -> dict[str, float]:
+    registry = default_registry()
+    instances = registry.instances(registry.select(None, FIRST_TWELVE), 1000, variations)
+    cores = os.cpu_count() or 1
+    one = len(instances) / await _evaluate_all(instances, 1)
+    many = len(instances) / await _evaluate_all(instances, cores)
+    return {"tasks": len(instances), "tasks_per_s_1": one, f"tasks_per_s_{cores}": many,
+            "scaling_all_cores": many / one, "cores": cores}
+
+
+async def scheduler_efficiency(latency: float, waves: int) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for slots in (1, 4, 16):
+        gate = asyncio.Semaphore(slots)
+
+        async def responder(body, gate=gate):
+            async with gate:  # the server's parallel slots; more requests would queue
+                await asyncio.sleep(latency)
+            return 200, chat_reply("ok"), {}
+
+        async with FakeOllama(responder) as server:
+            backend = OllamaBackend(LLMSettings(model="bench", backend="ollama", hosts=(server.url,),
+                                                batch_size=slots))
+            requests = [ChatRequest(user_messages(f"request {k}"), "select", f"t@{k}") for k in range(slots * waves)]
+            t0 = time.perf_counter()
+            await asyncio.gather(*(backend.chat(r) for r in requests))
+            wall = time.perf_counter() - t0
+            await backend.aclose()
+        out[str(slots)] = (len(requests) / wall) / (slots / latency)
+    return out
+
+
+async def pipelining(latency: float, variations: int) -> dict[str, float]:
+    registry = default_registry()
+    models = registry.select(None, FIRST_TWELVE)
+    instances = registry.instances(models, 2000, variations)
+    by_description = {i.description: i for i in instances}
+    slots = 2
+
+    async def responder(body):
+        await asyncio.sleep(latency)
+        prompt = body["messages"][-1]["content"]
+        instance = next(i for d, i in by_description.items() if d in prompt)
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        return 200, chat_reply(gold_code(instance.reference_program)), {}
+
+    cores = os.cpu_count() or 1
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="bench", backend="ollama", hosts=(server.url,), batch_size=slots)
+        catalog = rigid_catalog()
+        backend = OllamaBackend(llm)
+        t0 = time.perf_counter()
+
+        async def llm_only(instance):
+            selection = await choose_components(backend, instance, catalog)
+            await generate_code(backend, instance, catalog, selection)
+
+        await asyncio.gather(*(llm_only(i) for i in instances))
+        llm_time = time.perf_counter() - t0
+        await backend.aclose()
+        eval_time = await _evaluate_all(instances, cores)
+        with tempfile.TemporaryDirectory() as out:
+            settings = RunSettings(llm=llm, only=FIRST_TWELVE, variations=variations, seed=2000, out=Path(out),
+                                   run_name="bench", workers=cores, progress=False)
+            t0 = time.perf_counter()
+            run_json = await run_benchmark(settings)
+            wall = time.perf_counter() - t0
+            overall = json.loads(run_json.read_text())["summary"]["rates"]["overall"]
+    assert overall == 1.0
+    return {"llm_only_s": llm_time, "evaluation_only_s": eval_time, "pipelined_s": wall,
+            "pipelining_ratio": wall / max(llm_time, eval_time)}
+
+
+async def main_async(quick: bool) -> dict[str, object]:
+    results: dict[str, object] = {}
+    t0 = time.perf_counter()
+    iso = await isolation_overhead(5 if quick else 15)
+    print(f"1. isolation overhead (median per program): empty program cold {iso['empty_cold_ms']:.0f} ms, "
+          f"warm {iso['empty_warm_ms']:.1f} ms -> cold/warm {iso['cold_over_warm_overhead']:.1f}x; "
+          f"L1 task cold {iso['l1_task_cold_ms']:.0f} ms, warm {iso['l1_task_warm_ms']:.1f} ms "
+          f"-> {iso['l1_cold_over_warm']:.1f}x", flush=True)
+    tp = await throughput(1 if quick else 2)
+    cores = tp["cores"]
+    print(f"2. evaluation throughput ({tp['tasks']} gold tasks): 1 worker {tp['tasks_per_s_1']:.2f} tasks/s, "
+          f"{cores} workers {tp[f'tasks_per_s_{cores}']:.2f} tasks/s -> scaling {tp['scaling_all_cores']:.2f}x",
+          flush=True)
+    sched = await scheduler_efficiency(latency=0.5, waves=3 if quick else 5)
+    print("3. scheduler efficiency (achieved req/s / (N / latency)): "
+          + ", ".join(f"N={n}: {v:.3f}" for n, v in sched.items()), flush=True)
+    pipe = await pipelining(latency=0.15, variations=1 if quick else 3)
+    print(f"4. pipelining: LLM only {pipe['llm_only_s']:.1f} s, evaluation only {pipe['evaluation_only_s']:.1f} s, "
+          f"pipelined run {pipe['pipelined_s']:.1f} s -> ratio {pipe['pipelining_ratio']:.2f}", flush=True)
+    results.update(
+        cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
+        scheduler_efficiency=sched, pipelining_ratio=pipe["pipelining_ratio"], cores=cores,
+        details={"isolation": iso, "throughput": tp, "pipelining": pipe},
+        bench_wall_s=time.perf_counter() - t0,
+    )
+    print(f"bench finished in {results['bench_wall_s']:.0f} s")
+    return results
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--json", type=Path, default=None, help="write the figures to this file")
+    parser.add_argument("--quick", action="store_true", help="fewer repetitions (for a smoke test)")
+    args = parser.parse_args(argv)
+    results = asyncio.run(main_async(args.quick))
+    if args.json:
+        args.json.write_text(json.dumps(results, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
