@@ -46,10 +46,11 @@ def _think(text: str) -> bool | str:
 
 def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model", default="gold", help="model name (Ollama name, or 'gold')")
-    parser.add_argument("--backend", choices=("ollama", "gold"), default=None,
+    parser.add_argument("--backend", choices=("ollama", "openai", "gold"), default=None,
                         help="LLM backend; default: gold for --model gold, else ollama")
-    parser.add_argument("--host", action="append", default=None,
-                        help="Ollama server URL; repeat for several servers (default http://127.0.0.1:11434)")
+    parser.add_argument("--host", "--base-url", action="append", default=None, dest="host",
+                        help="server URL (Ollama: http://127.0.0.1:11434; openai: http://HOST:PORT/v1); "
+                             "repeat for several servers")
     parser.add_argument("--temperature", type=float, default=0.0)
     parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
     parser.add_argument("--think", type=_think, default=False, help="on/off or low/medium/high")

@@ -124,10 +124,10 @@ def grid_points(spec: SweepSpec) -> list[GridPoint]:
                                                           spec.select_templates, spec.code_templates)]
 
 
-async def _answers(host: str, timeout_s: float = 3.0) -> bool:
+async def _answers(host: str, path: str, timeout_s: float = 3.0) -> bool:
     try:
         async with httpx.AsyncClient(timeout=timeout_s) as client:
-            response = await client.get(host.rstrip("/") + "/api/version")
+            response = await client.get(host.rstrip("/") + path)
             return response.status_code == 200
     except httpx.HTTPError:
         return False
@@ -136,12 +136,14 @@ async def _answers(host: str, timeout_s: float = 3.0) -> bool:
 def unreachable_hosts(points: list[GridPoint]) -> list[str]:
     """Hosts of Ollama grid points that do not answer ``/api/version``."""
     hosts = sorted({h for p in points if p.llm().backend == "ollama" for h in p.model.hosts})
+    openai_hosts = sorted({h for p in points if p.llm().backend == "openai" for h in p.model.hosts})
 
     async def probe() -> list[str]:
-        results = await asyncio.gather(*(_answers(h) for h in hosts))
-        return [h for h, ok in zip(hosts, results, strict=True) if not ok]
+        results = await asyncio.gather(*(_answers(h, "/api/version") for h in hosts),
+                                       *(_answers(h, "/models") for h in openai_hosts))
+        return [h for h, ok in zip(hosts + openai_hosts, results, strict=True) if not ok]
 
-    return asyncio.run(probe()) if hosts else []
+    return asyncio.run(probe()) if hosts or openai_hosts else []
 
 
 def with_overrides(spec: SweepSpec, **changes: Any) -> SweepSpec:

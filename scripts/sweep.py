@@ -33,8 +33,9 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--spec", type=Path, default=None, help=f"TOML sweep spec (default {DEFAULT_SPEC.name})")
     p.add_argument("--model", action="append", help="model name; repeat for several (gold = ground truth)")
-    p.add_argument("--backend", choices=("ollama", "gold"), default=None)
-    p.add_argument("--host", action="append", help="Ollama server URL; repeat for several")
+    p.add_argument("--backend", choices=("ollama", "openai", "gold"), default=None)
+    p.add_argument("--host", "--base-url", action="append", dest="host",
+                   help="server URL (Ollama, or an OpenAI-compatible .../v1); repeat for several")
     p.add_argument("--temperature", action="append", type=float)
     p.add_argument("--think", action="append", type=_think)
     p.add_argument("--select-template", action="append")

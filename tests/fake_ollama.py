@@ -74,6 +74,7 @@ class FakeOllama:
     async def __aenter__(self) -> FakeOllama:
         app = web.Application()
         app.router.add_post("/api/chat", self._chat)
+        app.router.add_post("/v1/chat/completions", self._chat)  # the OpenAI-compatible route
         self._runner = web.AppRunner(app)
         await self._runner.setup()
         site = web.TCPSite(self._runner, "127.0.0.1", 0)
@@ -85,3 +86,15 @@ class FakeOllama:
     async def __aexit__(self, *exc: object) -> None:
         if self._runner is not None:
             await self._runner.cleanup()
+
+
+def openai_reply(content: str, finish_reason: str = "stop", reasoning: str | None = None,
+                 prompt_tokens: int = 100, completion_tokens: int = 50) -> dict[str, Any]:
+    """A non-streaming /v1/chat/completions response body as vLLM / llama.cpp send it."""
+    message: dict[str, Any] = {"role": "assistant", "content": content}
+    if reasoning is not None:
+        message["reasoning_content"] = reasoning
+    return {"id": "chatcmpl-1", "object": "chat.completion", "created": 0, "model": "fake",
+            "choices": [{"index": 0, "message": message, "finish_reason": finish_reason}],
+            "usage": {"prompt_tokens": prompt_tokens, "completion_tokens": completion_tokens,
+                      "total_tokens": prompt_tokens + completion_tokens}}

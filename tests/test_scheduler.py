@@ -62,3 +62,41 @@ async def test_failing_endpoint_is_taken_out_and_others_carry_the_load() -> None
     assert all(r.content == "ok" for r in responses)
     assert len(bad.requests) <= 12  # only its first share of the burst; retries go elsewhere
     assert all(r.endpoint == good.url for r in responses)
+
+
+async def test_openai_compatible_backend(tmp_path) -> None:
+    import json
+
+    from fake_ollama import openai_reply
+
+    from meceng.agents.llm import OpenAIBackend
+    from meceng.agents.prompts import gold_code, gold_selection
+    from meceng.pipeline import RunSettings, run_benchmark
+    from meceng.tasks.registry import default_registry
+
+    instance = default_registry().get("single_pendulum").instance(0)
+    calls = {"n": 0}
+
+    def responder(body):
+        calls["n"] += 1
+        if calls["n"] == 1:
+            return 429, {"error": {"message": "slow down"}}, {"Retry-After": "0"}
+        prompt = body["messages"][-1]["content"]
+        if "<components>" in prompt:
+            return 200, openai_reply(gold_selection(instance.required_components), reasoning="thinking..."), {}
+        return 200, openai_reply(gold_code(instance.reference_program)), {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="served-model", backend="openai", hosts=(server.url + "/v1",), think="low",
+                          num_predict=1234, seed=7, backoff_s=0.01)
+        settings = RunSettings(llm=llm, only=("single_pendulum",), variations=1, out=tmp_path, run_name="oa",
+                               progress=False)
+        run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
+    body = server.requests[-1]
+    assert body["model"] == "served-model" and body["max_completion_tokens"] == 1234
+    assert body["seed"] == 7 and body["reasoning_effort"] == "low" and body["stream"] is False
+    run = json.loads(run_json.read_text())
+    task = run["tasks"][0]
+    assert task["overall"] is True
+    assert task["selection"]["meta"]["attempts"] == 2  # the 429 was retried
+    assert task["selection"]["meta"]["prompt_tokens"] == 100

@@ -295,7 +295,10 @@ class OllamaBackend:
             endpoint.slots.release()
             endpoint.in_flight -= 1
         endpoint.failures = 0
-        return _from_ollama(raw, wall, endpoint.host)
+        return self._convert(raw, wall, endpoint.host)
+
+    def _convert(self, raw: Any, wall: float, host: str) -> ChatResponse:
+        return _from_ollama(raw, wall, host)
 
     async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
         t0 = time.perf_counter()
@@ -365,12 +368,81 @@ def _with_attempts(response: ChatResponse, attempts: int) -> ChatResponse:
     return replace(response, attempts=attempts)
 
 
+class OpenAIBackend(OllamaBackend):
+    """An OpenAI-compatible ``/v1/chat/completions`` server (vLLM, SGLang, llama.cpp server).
+
+    Same scheduler as Ollama; ``hosts`` are base URLs ending in ``/v1``. Sends
+    ``max_completion_tokens``, ``temperature``, ``seed`` and, when thinking is set, ``reasoning_effort``;
+    reads ``reasoning_content`` / ``reasoning`` and ``finish_reason`` (``length`` = truncated).
+    """
+
+    name = "openai"
+
+    def __init__(self, settings: LLMSettings, api_key: str | None = None) -> None:
+        headers = {"Authorization": f"Bearer {api_key}"} if api_key else {}
+        super().__init__(settings, client_factory=lambda host: httpx.AsyncClient(
+            base_url=host.rstrip("/"), timeout=settings.timeout_s, headers=headers))
+
+    async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
+        body: dict[str, Any] = {
+            "model": self.settings.model, "messages": list(request.messages), "stream": False,
+            "temperature": self.settings.temperature, "max_completion_tokens": self.settings.num_predict,
+        }
+        if self.settings.seed is not None:
+            body["seed"] = self.settings.seed
+        if isinstance(self.settings.think, str):
+            body["reasoning_effort"] = self.settings.think
+        t0 = time.perf_counter()
+        try:
+            response = await endpoint.client.post("/chat/completions", json=body)
+        except (httpx.TransportError, TimeoutError) as exc:
+            self._note_failure(endpoint, True)
+            raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
+                           transient=True) from exc
+        if response.status_code >= 400:
+            transient = response.status_code in TRANSIENT_STATUS
+            self._note_failure(endpoint, transient)
+            raise LLMError(f"server error {response.status_code}: {response.text[:300]}", transient=transient,
+                           status=response.status_code,
+                           retry_after=parse_retry_after(response.headers.get("retry-after")))
+        try:
+            data = response.json()
+            data["choices"][0]["message"]
+        except (ValueError, KeyError, IndexError, TypeError) as exc:
+            self._note_failure(endpoint, True)
+            raise LLMError(f"malformed response from {endpoint.host}: {exc}", transient=True) from exc
+        return data, time.perf_counter() - t0
+
+    def _convert(self, raw: Any, wall: float, host: str) -> ChatResponse:
+        choice = raw["choices"][0]
+        message = choice["message"]
+        usage = raw.get("usage") or {}
+        return ChatResponse(
+            content=message.get("content") or "",
+            thinking=message.get("reasoning_content") or message.get("reasoning") or "",
+            done_reason=choice.get("finish_reason"),
+            prompt_tokens=int(usage.get("prompt_tokens") or 0),
+            completion_tokens=int(usage.get("completion_tokens") or 0),
+            total_duration_s=wall,
+            wall_time_s=wall,
+            endpoint=host,
+        )
+
+    async def aclose(self) -> None:
+        for endpoint in self.endpoints:
+            await endpoint.client.aclose()
+
+
 def make_backend(settings: LLMSettings) -> Backend:
     if settings.backend == "gold":
         return GoldBackend()
     if settings.backend == "ollama":
         return OllamaBackend(settings)
-    raise ValueError(f"unknown backend {settings.backend!r} (choose gold or ollama)")
+    if settings.backend == "openai":
+        import os
+
+        return OpenAIBackend(settings, api_key=os.environ.get("MECENG_OPENAI_API_KEY"))
+    raise ValueError(f"unknown backend {settings.backend!r} (choose gold, ollama or openai)")
 
 
 def user_messages(*texts: str) -> tuple[dict[str, str], ...]:
