@@ -55,10 +55,22 @@ async def test_endless_loop_is_killed_with_its_children(tmp_path) -> None:
     assert result.error_kind == "timeout" and result.stage == "finished_assemble"
 
 
-async def test_segfault_is_a_verdict() -> None:
+@pytest.mark.parametrize("warm", [False, True])
+async def test_segfault_is_a_verdict(warm: bool) -> None:
     # the audit hook would refuse ctypes; switch it off to see the process-level containment
+    from meceng.tools.executor import child_env
+    from meceng.tools.warm import WarmPool
+
+    pool = WarmPool(child_env()) if warm else None
     code = "import ctypes\nctypes.string_at(0)\n"
-    result = await execute(code, SIM, ExecutionLimits(guard=False), check=False)
+    try:
+        result = await execute(code, SIM, ExecutionLimits(guard=False), check=False, pool=pool)
+        if pool is not None:  # the fork server survives its child's crash and serves the next one
+            after = await execute(HEAD + MODEL + "mbs.Assemble()\n", SIM, pool=pool)
+            assert after.solved
+    finally:
+        if pool is not None:
+            await pool.close()
     assert result.error_kind == "crash" and "SIGSEGV" in (result.error or "")
 
 
