@@ -121,3 +121,26 @@ def test_cli_evaluate_reports_stages_as_json(tmp_path: Path) -> None:
     proc = subprocess.run([sys.executable, "-m", "meceng.cli", "evaluate", "3", "--seed", "3", "--code", str(right)],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0 and "overall: success" in proc.stdout
+
+
+async def test_symmetric_grid_in_another_order_is_compared_quickly() -> None:
+    """A net of identical springs: items in another order still match, and a wrong stiffness is
+    reported on the springs only (the partner mapping follows the geometry)."""
+    import time
+
+    instance = default_registry().get("grid_mesh_and_large_sphere_impact").instance(3)
+    lines = instance.reference_program.splitlines()
+    rows = next(k for k, ln in enumerate(lines) if ln.startswith("for j in range(1, n + 1):")
+                and "range(0, n + 1)" in lines[k + 1])
+    cols = next(k for k, ln in enumerate(lines) if ln.startswith("for i in range(1, n + 1):")
+                and "range(0, n + 1)" in lines[k + 1])
+    swapped = "\n".join(lines[:rows] + lines[cols:cols + 3] + lines[rows:rows + 3] + lines[cols + 3:])
+    t0 = time.perf_counter()
+    verdict, _, _ = await evaluate_program(instance, swapped)
+    assert verdict.stage("graph_content_match").passed and verdict.stage("solution_match").passed
+    k = instance.params["spring_stiffness"]
+    wrong = swapped.replace(f"\nspring_stiffness = {k!r}\n", f"\nspring_stiffness = {k * 1.05!r}\n")
+    verdict, _, _ = await evaluate_program(instance, wrong)
+    assert verdict.first_failure == "graph_content_match"
+    assert verdict.error_categories == ("connector/constraint",)
+    assert time.perf_counter() - t0 < 30

@@ -14,6 +14,7 @@ Plain VF2 explodes on symmetric systems; VF2++ with hashable labels does not.
 from __future__ import annotations
 
 import math
+import time
 import warnings
 from collections import Counter
 from dataclasses import dataclass, field
@@ -47,6 +48,7 @@ class GraphTolerance:
     atol: float = 1e-10
     max_nodes: int = 5000
     include_sensors: bool = False
+    timeout_s: float = 120.0
 
 
 @dataclass
@@ -83,8 +85,13 @@ def build_graph(items: dict[str, list[dict[str, Any]]], include_sensors: bool = 
                 for slot, target in enumerate(targets):
                     if isinstance(target, int) and target >= 0 and (target_kind, target) in graph:
                         graph.add_edge((kind, index), (target_kind, target), field=key, slot=slot)
-    for _, data in graph.nodes(data=True):
+    for (kind, _), data in graph.nodes(data=True):
         data["label"] = data["type"] + "|" + _hash_annotations(data["annotations"])
+        # partial labels: pair items by geometry when physics differs, and the other way round,
+        # so that the differences of a wrong answer are reported between the right partners
+        geometric = kind in ("nodes", "markers")
+        data["label_geometry"] = data["label"] if geometric else data["type"]
+        data["label_physics"] = data["type"] if geometric else data["label"]
     return graph
 
 
@@ -159,10 +166,13 @@ def compare_graphs(
 
     # level 3 first where possible: a labelled isomorphism (type + rounded annotations) is found
     # fast even on symmetric structures, where a type-only search can take minutes
-    full = _isomorphism(g_cand, g_ref, "label")
-    if full is not None and _annotations_match(g_cand, g_ref, full, tol):
-        return GraphComparison(True, True, True, "systems are identical")
-    mapping = identity if same_order else _isomorphism(g_cand, g_ref, "type")
+    try:
+        full = _isomorphism(g_cand, g_ref, "label", tol.timeout_s)
+        if full is not None and _annotations_match(g_cand, g_ref, full, tol):
+            return GraphComparison(True, True, True, "systems are identical")
+        mapping = identity if same_order else _partner_mapping(g_cand, g_ref, tol.timeout_s)
+    except ComparisonTimeout:
+        return GraphComparison(True, False, False, f"graph comparison timed out after {tol.timeout_s:g} s")
     if mapping is None:
         return GraphComparison(True, False, False, "topology differs (connections between items)")
     differences = _differences(g_cand, g_ref, mapping, tol)
@@ -183,14 +193,81 @@ def _wl_hash(graph: nx.DiGraph) -> str:
         return nx.weisfeiler_lehman_graph_hash(graph, node_attr="type", edge_attr="field")
 
 
-def _isomorphism(g1: nx.DiGraph, g2: nx.DiGraph, label: str) -> dict[Any, Any] | None:
-    """VF2++ mapping g1 -> g2 respecting node labels and edge fields, or None."""
-    # edge fields are folded into node labels of line-graph-like helper nodes so VF2++ sees them
+def _partner_mapping(g1: nx.DiGraph, g2: nx.DiGraph, timeout_s: float) -> dict[Any, Any] | None:
+    """A type isomorphism that pairs items as well as the annotations allow."""
+    for label in ("label_geometry", "label_physics", "type"):
+        mapping = _isomorphism(g1, g2, label, timeout_s)
+        if mapping is not None:
+            return mapping
+    return None
+
+
+class ComparisonTimeout(Exception):
+    """The isomorphism search ran out of its time budget."""
+
+
+def _isomorphism(g1: nx.DiGraph, g2: nx.DiGraph, label: str, timeout_s: float = 120.0) -> dict[Any, Any] | None:
+    """An isomorphism g1 -> g2 respecting node labels and edge fields, or None.
+
+    Colour refinement (1-WL on both graphs jointly) first, then individualisation of one node of
+    the smallest ambiguous colour class at a time, refining again after each choice. Symmetric
+    systems (grids, chains, trusses) resolve after a few choices, where a plain VF2 search can
+    take minutes. Raises :class:`ComparisonTimeout` past ``timeout_s``.
+    """
     h1, h2 = _with_edge_nodes(g1, label), _with_edge_nodes(g2, label)
-    mapping = nx.vf2pp_isomorphism(h1, h2, node_label="label")
+    if h1.number_of_nodes() != h2.number_of_nodes() or h1.number_of_edges() != h2.number_of_edges():
+        return None
+    initial = {(k, n): d["label"] for k, h in ((0, h1), (1, h2)) for n, d in h.nodes(data=True)}
+    deadline = time.monotonic() + timeout_s
+    mapping = _search(h1, h2, _refine(h1, h2, initial), deadline)
     if mapping is None:
         return None
     return {n: mapping[n] for n in g1.nodes}
+
+
+def _refine(h1: nx.DiGraph, h2: nx.DiGraph, colours: dict[tuple[int, Any], Any]) -> dict[tuple[int, Any], int]:
+    """Stable joint colouring: a node's colour is its old colour plus its neighbours' colours."""
+    palette = {c: i for i, c in enumerate(sorted(set(colours.values()), key=repr))}
+    current = {key: palette[c] for key, c in colours.items()}
+    graphs = ((0, h1), (1, h2))
+    while True:
+        signature = {
+            (k, n): (current[(k, n)],
+                     tuple(sorted(current[(k, p)] for p in h.predecessors(n))),
+                     tuple(sorted(current[(k, q)] for q in h.successors(n))))
+            for k, h in graphs for n in h.nodes
+        }
+        palette = {sig: i for i, sig in enumerate(sorted(set(signature.values())))}
+        refined = {key: palette[sig] for key, sig in signature.items()}
+        if len(palette) == len(set(current.values())):
+            return refined
+        current = refined
+
+
+def _search(h1: nx.DiGraph, h2: nx.DiGraph, colours: dict[tuple[int, Any], int], deadline: float,
+            ) -> dict[Any, Any] | None:
+    classes: dict[int, tuple[list[Any], list[Any]]] = {}
+    for (k, n), c in colours.items():
+        classes.setdefault(c, ([], []))[k].append(n)
+    if any(len(a) != len(b) for a, b in classes.values()):
+        return None
+    ambiguous = [(len(a), c) for c, (a, _) in classes.items() if len(a) > 1]
+    if not ambiguous:
+        mapping = {a[0]: b[0] for a, b in classes.values()}
+        edges1 = {(mapping[u], mapping[v]) for u, v in h1.edges}
+        return mapping if edges1 == set(h2.edges) else None
+    _, colour = min(ambiguous)
+    first, candidates = classes[colour]
+    fresh = max(colours.values()) + 1
+    for candidate in candidates:
+        if time.monotonic() > deadline:
+            raise ComparisonTimeout
+        trial = dict(colours)
+        trial[(0, first[0])] = trial[(1, candidate)] = fresh
+        found = _search(h1, h2, _refine(h1, h2, trial), deadline)
+        if found is not None:
+            return found
+    return None
 
 
 def _with_edge_nodes(graph: nx.DiGraph, label: str) -> nx.DiGraph:
