@@ -539,6 +539,8 @@ ROLLING_DISC = Component(
         - Start consistently with rolling: axis x, rolling with speed v in +y needs initialVelocity=[0, v, 0]
           and initialAngularVelocity=[-v/r, 0, 0] (the contact point has zero velocity).
         - The constraint is ideal: no slip, no rolling resistance; the wheel is a rigid body with gravity= as usual.
+        - constrainedAxes=[lateral, longitudinal, normal] (default [1, 1, 1]) switches single directions of the
+          contact constraint off, e.g. to avoid redundant constraints when several wheels share one chassis.
     """),
     example=_example("""
         # an upright wheel (axis along x) rolling in +y direction on the floor z = 0
@@ -648,7 +650,9 @@ SPHERE_SPHERE_CONTACT = Component(
         mbs.CreateSphereSphereContact(itemNumbers=[oBall0, oBall1], spheresRadii=[r0, r1], contactStiffness=k,
                                       contactDamping=0, impactModel=2, restitutionCoefficient=e)
         - The sphere centers are the items' reference points (mass point or rigid body center); spheresRadii [m],
-          contactStiffness [N/m], contactDamping [N*s/m].
+          contactStiffness [N/m], contactDamping [N*s/m]. localPosition0/localPosition1 shift a sphere center
+          in the item's frame, e.g. a ground sphere centered below the floor: itemNumbers=[oGround, oBall],
+          localPosition0=[0, 0, -R].
         - restitutionCoefficient is only used with impactModel=2 (or 1); with the default impactModel=0 it is
           ignored and only the linear contactDamping acts. For a given e use impactModel=2 and
           contactDamping=0.
