@@ -76,6 +76,29 @@ async def _evaluate_all(instances, workers: int) -> float:
     return time.perf_counter() - t0
 
 
+def _burn(n: int) -> float:
+    t0 = time.perf_counter()
+    x = 0
+    for i in range(n):
+        x += i * i
+    return time.perf_counter() - t0
+
+
+def hardware_scaling(cores: int) -> float:
+    """What the machine itself gives: the same pure-CPU loop in 1 process vs in ``cores`` processes."""
+    import multiprocessing as mp
+
+    n = 3_000_000
+    t0 = time.perf_counter()
+    _burn(n)
+    single = time.perf_counter() - t0
+    with mp.get_context("fork").Pool(cores) as pool:
+        t0 = time.perf_counter()
+        pool.map(_burn, [n] * cores)
+        parallel = time.perf_counter() - t0
+    return cores * single / parallel
+
+
 async def throughput(variations: int) -> dict[str, float]:
     registry = default_registry()
     instances = registry.instances(registry.select(None, FIRST_TWELVE), 1000, variations)
@@ -83,7 +106,7 @@ async def throughput(variations: int) -> dict[str, float]:
     one = len(instances) / await _evaluate_all(instances, 1)
     many = len(instances) / await _evaluate_all(instances, cores)
     return {"tasks": len(instances), "tasks_per_s_1": one, f"tasks_per_s_{cores}": many,
-            "scaling_all_cores": many / one, "cores": cores}
+            "scaling_all_cores": many / one, "cores": cores, "hardware_scaling": hardware_scaling(cores)}
 
 
 async def scheduler_efficiency(latency: float, waves: int) -> dict[str, float]:
@@ -161,7 +184,8 @@ async def main_async(quick: bool) -> dict[str, object]:
     tp = await throughput(1 if quick else 2)
     cores = tp["cores"]
     print(f"2. evaluation throughput ({tp['tasks']} gold tasks): 1 worker {tp['tasks_per_s_1']:.2f} tasks/s, "
-          f"{cores} workers {tp[f'tasks_per_s_{cores}']:.2f} tasks/s -> scaling {tp['scaling_all_cores']:.2f}x",
+          f"{cores} workers {tp[f'tasks_per_s_{cores}']:.2f} tasks/s -> scaling {tp['scaling_all_cores']:.2f}x "
+          f"(the machine itself: a pure-CPU loop in {cores} processes scales {tp['hardware_scaling']:.2f}x)",
           flush=True)
     sched = await scheduler_efficiency(latency=0.5, waves=3 if quick else 5)
     print("3. scheduler efficiency (achieved req/s / (N / latency)): "
@@ -171,6 +195,7 @@ async def main_async(quick: bool) -> dict[str, object]:
           f"pipelined run {pipe['pipelined_s']:.1f} s -> ratio {pipe['pipelining_ratio']:.2f}", flush=True)
     results.update(
         cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
+        hardware_scaling=tp["hardware_scaling"],
         scheduler_efficiency=sched, pipelining_ratio=pipe["pipelining_ratio"], cores=cores,
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
