@@ -73,6 +73,11 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="fork: warm fork server (default); subprocess: a cold interpreter per program")
+    parser.add_argument("--agent", choices=("pipeline", "loop"), default="pipeline",
+                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs")
+    parser.add_argument("--max-rounds", type=_positive_int, default=6, help="model calls per task in --agent loop")
+    parser.add_argument("--token-budget", type=_positive_int, default=30000,
+                        help="completion tokens per task in --agent loop")
     parser.add_argument("--select-template", default="CI1")
     parser.add_argument("--code-template", default="MBS1")
     parser.add_argument("--no-progress", action="store_true")
@@ -111,7 +116,8 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,
-        progress=not args.no_progress, executor=args.executor,
+        progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
+        token_budget=args.token_budget,
     )
 
 

@@ -29,7 +29,9 @@ import structlog
 from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
 from meceng.agents.catalog import Catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
+from meceng.agents.loop import run_agent
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
+from meceng.agents.toolbox import Toolbox
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
@@ -61,6 +63,9 @@ class RunSettings:
     progress: bool = True
     resume: bool = False
     executor: str = "fork"
+    agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code
+    max_rounds: int = 6
+    token_budget: int = 30000
 
     @classmethod
     def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
@@ -74,14 +79,16 @@ class RunSettings:
             workers=pipeline["workers"], exec_timeout_s=pipeline["exec_timeout_s"],
             solution_tolerance=pipeline["solution_tolerance"], select_template=data["prompt"]["select_template"],
             code_template=data["prompt"]["code_template"], resume=True,
-            executor=pipeline.get("executor", "fork"),
+            executor=pipeline.get("executor", "fork"), agent=pipeline.get("agent", "pipeline"),
+            max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
         )
 
     def to_json(self) -> dict[str, Any]:
         return {
             "llm": self.llm.to_json(),
             "pipeline": {
-                "executor": self.executor,
+                "executor": self.executor, "agent": self.agent, "max_rounds": self.max_rounds,
+                "token_budget": self.token_budget,
                 "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
                 "solution_tolerance": self.solution_tolerance,
@@ -283,6 +290,8 @@ async def run_task(
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     selection = await choose_components(backend, instance, catalog, settings.select_template)
+    if settings.agent == "loop":
+        return await _run_agent_task(instance, backend, catalog, evaluator, settings, writer, selection, t0)
     generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
     t_llm = time.perf_counter() - t0
     selected = selection.names if selection.infrastructure_error is None else ()
@@ -291,6 +300,31 @@ async def run_task(
     files = writer.save_programs(instance, generation.code)
     return task_record(instance, selection, generation, verdict, candidate, reference,
                        {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total}, files)
+
+
+async def _run_agent_task(
+    instance: TaskInstance, backend: Backend, catalog: Catalog, evaluator: Evaluator, settings: RunSettings,
+    writer: RunWriter, selection: Selection, t0: float,
+) -> dict[str, Any]:
+    """The tool-calling agent: grade its first and its final program with the standard chain."""
+    toolbox = Toolbox(instance, catalog, evaluator.limits, evaluator.pool)
+    agent = await run_agent(backend, instance, catalog, selection, toolbox, template=settings.code_template,
+                            max_rounds=settings.max_rounds, token_budget=settings.token_budget)
+    t_llm = time.perf_counter() - t0
+    selected = selection.names if selection.infrastructure_error is None else ()
+    first, _, _ = await evaluator.evaluate(instance, agent.first_code, selected, agent.error)
+    verdict, candidate, reference = await evaluator.evaluate(instance, agent.final_code, selected, agent.error)
+    generation = Generation(prompt=agent.transcript[0]["content"], answer=agent.transcript[-1].get("content", ""),
+                            code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
+                            meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
+                                  "context_used": agent.prompt_tokens + agent.completion_tokens})
+    t_total = time.perf_counter() - t0
+    files = writer.save_programs(instance, agent.final_code)
+    record = task_record(instance, selection, generation, verdict, candidate, reference,
+                         {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total}, files)
+    record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
+                       "first_stages": [s.to_json() for s in first.stages]}
+    return record
 
 
 def _failed_record(instance: TaskInstance, exc: BaseException) -> dict[str, Any]:

@@ -13,13 +13,14 @@ import os
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMSettings
+from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMSettings, ToolCall
 
 
 def request_key(settings: LLMSettings, request: ChatRequest) -> str:
     payload = {
         "backend": settings.backend, "model": settings.model, "messages": list(request.messages),
         "options": settings.options(), "think": settings.think, "purpose": request.purpose,
+        "tools": list(request.tools),
     }
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
@@ -55,7 +56,8 @@ class ResponseCache:
         if entry is None:
             return None
         self.hits += 1
-        return ChatResponse(**entry)
+        calls = tuple(ToolCall(**c) for c in entry.get("tool_calls", ()))
+        return ChatResponse(**{**entry, "tool_calls": calls})
 
     def put(self, key: str, response: ChatResponse) -> None:
         self.misses += 1

@@ -15,6 +15,7 @@ from __future__ import annotations
 import asyncio
 import contextvars
 import heapq
+import json
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -98,14 +99,27 @@ class LLMSettings:
 class ChatRequest:
     """One chat call. ``gold`` is the expected answer; only the gold backend reads it."""
 
-    messages: tuple[dict[str, str], ...]
+    messages: tuple[dict[str, Any], ...]
     purpose: str
     task_key: str
     gold: str | None = None
+    tools: tuple[dict[str, Any], ...] = ()  # JSON-schema function definitions for native tool calling
 
     @property
     def prompt(self) -> str:
-        return "\n\n".join(m["content"] for m in self.messages)
+        return "\n\n".join(str(m.get("content", "")) for m in self.messages)
+
+
+@dataclass(frozen=True)
+class ToolCall:
+    """A function call the model asked for; ``id`` is the OpenAI call id (empty for Ollama)."""
+
+    name: str
+    arguments: dict[str, Any]
+    id: str = ""
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "arguments": self.arguments, "id": self.id}
 
 
 @dataclass(frozen=True)
@@ -121,6 +135,7 @@ class ChatResponse:
     wall_time_s: float = 0.0
     attempts: int = 1
     endpoint: str = ""
+    tool_calls: tuple[ToolCall, ...] = ()
 
     @property
     def truncated(self) -> bool:
@@ -307,6 +322,7 @@ class OllamaBackend:
             raw = await endpoint.client.chat(
                 model=self.settings.model,
                 messages=list(request.messages),
+                tools=list(request.tools) or None,
                 stream=False,
                 think=self.settings.think,
                 options=self.settings.options(),
@@ -346,7 +362,12 @@ def _ns(value: Any) -> float:
 
 def _from_ollama(raw: Any, wall: float, host: str) -> ChatResponse:
     message = raw.message
+    calls = tuple(
+        ToolCall(name=c.function.name, arguments=dict(c.function.arguments or {}))
+        for c in (getattr(message, "tool_calls", None) or ())
+    )
     return ChatResponse(
+        tool_calls=calls,
         content=message.content or "",
         thinking=getattr(message, "thinking", None) or "",
         done_reason=raw.done_reason,
@@ -392,6 +413,8 @@ class OpenAIBackend(OllamaBackend):
             body["seed"] = self.settings.seed
         if isinstance(self.settings.think, str):
             body["reasoning_effort"] = self.settings.think
+        if request.tools:
+            body["tools"] = [{"type": "function", "function": tool} for tool in request.tools]
         t0 = time.perf_counter()
         try:
             response = await endpoint.client.post("/chat/completions", json=body)
@@ -417,7 +440,16 @@ class OpenAIBackend(OllamaBackend):
         choice = raw["choices"][0]
         message = choice["message"]
         usage = raw.get("usage") or {}
+        calls = []
+        for call in message.get("tool_calls") or ():
+            function = call.get("function", {})
+            try:
+                arguments = json.loads(function.get("arguments") or "{}")
+            except ValueError:
+                arguments = {"_unparsed": function.get("arguments")}
+            calls.append(ToolCall(name=function.get("name", ""), arguments=arguments, id=call.get("id", "")))
         return ChatResponse(
+            tool_calls=tuple(calls),
             content=message.get("content") or "",
             thinking=message.get("reasoning_content") or message.get("reasoning") or "",
             done_reason=choice.get("finish_reason"),

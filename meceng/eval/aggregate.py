@@ -47,6 +47,30 @@ def stage_rates(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
             "passed": {**{k: passed[k] for k in order}, "overall": overall}, "rates": rates}
 
 
+def agent_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """First answer vs after the loop (uplift), rounds and tokens per solved task, tools used."""
+    agents = [r for r in records if "agent" in r and r.get("first_failure") != "infrastructure"]
+    if not agents:
+        return None
+    n = len(agents)
+    first = sum(1 for r in agents if r["agent"]["first_overall"])
+    final = sum(1 for r in agents if r.get("overall"))
+    solved = [r for r in agents if r.get("overall")]
+    tools: Counter[str] = Counter()
+    for r in agents:
+        tools.update(r["agent"]["tool_calls"])
+    return {
+        "tasks": n, "first_overall": first / n, "final_overall": final / n, "uplift": (final - first) / n,
+        "repaired": sum(1 for r in agents if r.get("overall") and not r["agent"]["first_overall"]),
+        "broken_by_loop": sum(1 for r in agents if r["agent"]["first_overall"] and not r.get("overall")),
+        "rounds_mean": sum(r["agent"]["rounds"] for r in agents) / n,
+        "rounds_per_solved": (sum(r["agent"]["rounds"] for r in solved) / len(solved)) if solved else None,
+        "tokens_per_solved": (sum(r["agent"]["completion_tokens"] for r in solved) / len(solved)) if solved else None,
+        "tool_calls": dict(tools),
+        "stop_reasons": dict(Counter(r["agent"]["stop_reason"] for r in agents)),
+    }
+
+
 def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
     """The ``summary`` block of run.json."""
     records = list(records)
@@ -75,6 +99,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
             "context_used_p95": _percentile([c.get("context_used", 0) for c in calls], 95),
             "truncated_answers": truncated,
         },
+        "agent": agent_summary(records),
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

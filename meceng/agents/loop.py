@@ -1,0 +1,130 @@
+"""The self-validating agent: the model writes a program, calls the simulator as a tool, reads
+what it reports and repairs the program before it answers.
+
+The conversation runs through the backend's native tool calling (Ollama ``tools`` /
+``message.tool_calls``, OpenAI ``tools`` / ``tool_calls``). It is bounded by ``max_rounds`` model
+calls and a completion-token budget. The first program the model produced and the final one are
+both kept, so the benchmark can count what the loop adds.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from typing import Any
+
+from meceng.agents.catalog import Catalog
+from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMError, ToolCall
+from meceng.agents.parsing import extract_code
+from meceng.agents.prompts import code_prompt, gold_code
+from meceng.agents.steps import Selection
+from meceng.agents.toolbox import Toolbox
+from meceng.tasks.base import TaskInstance
+
+AGENT_NOTE = """
+You can call tools before you answer: `simulate(code)` runs a complete program and reports what it
+built and how it moved, `self_check(code)` looks for problems, `list_components()` and
+`component_docs(names)` give documentation. Test your program, repair it if needed, and then give
+the final program in a single ```python code block without calling a tool.
+"""
+
+
+@dataclass
+class AgentResult:
+    first_code: str | None
+    final_code: str | None
+    error: str | None
+    stop_reason: str
+    rounds: int
+    tool_calls: dict[str, int]
+    completion_tokens: int
+    prompt_tokens: int
+    transcript: list[dict[str, Any]] = field(default_factory=list)
+    infrastructure_error: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "first_code": self.first_code, "final_code": self.final_code, "error": self.error,
+            "stop_reason": self.stop_reason, "rounds": self.rounds, "tool_calls": self.tool_calls,
+            "completion_tokens": self.completion_tokens, "prompt_tokens": self.prompt_tokens,
+            "transcript": self.transcript, "infrastructure_error": self.infrastructure_error,
+        }
+
+
+def _assistant_message(backend: Backend, response: ChatResponse) -> dict[str, Any]:
+    message: dict[str, Any] = {"role": "assistant", "content": response.content}
+    if response.tool_calls:
+        if backend.name == "openai":
+            message["tool_calls"] = [{"id": c.id, "type": "function",
+                                      "function": {"name": c.name, "arguments": json.dumps(c.arguments)}}
+                                     for c in response.tool_calls]
+        else:
+            message["tool_calls"] = [{"function": {"name": c.name, "arguments": c.arguments}}
+                                     for c in response.tool_calls]
+    return message
+
+
+def _tool_message(backend: Backend, call: ToolCall, result: str) -> dict[str, Any]:
+    if backend.name == "openai":
+        return {"role": "tool", "tool_call_id": call.id, "content": result}
+    return {"role": "tool", "tool_name": call.name, "content": result}
+
+
+async def run_agent(
+    backend: Backend,
+    instance: TaskInstance,
+    catalog: Catalog,
+    selection: Selection,
+    toolbox: Toolbox,
+    *,
+    template: str = "MBS1",
+    max_rounds: int = 6,
+    token_budget: int = 30000,
+) -> AgentResult:
+    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + AGENT_NOTE
+    messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
+    transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
+    first_code: str | None = None
+    last_code: str | None = None
+    completion = prompt_tokens = 0
+    stop = "max_rounds"
+    error: str | None = None
+    rounds = 0
+    for rounds in range(1, max_rounds + 1):
+        request = ChatRequest(tuple(messages), "code", instance.key, gold=gold_code(instance.reference_program),
+                              tools=toolbox.schemas)
+        try:
+            response = await backend.chat(request)
+        except LLMError as exc:
+            return AgentResult(first_code, last_code, str(exc), "infrastructure", rounds, dict(toolbox.calls),
+                               completion, prompt_tokens, transcript, infrastructure_error=str(exc))
+        completion += response.completion_tokens
+        prompt_tokens += response.prompt_tokens
+        entry: dict[str, Any] = {"role": "assistant", "content": response.content,
+                                 "tool_calls": [c.to_json() for c in response.tool_calls], "meta": response.meta()}
+        transcript.append(entry)
+        if not response.tool_calls:
+            extracted = extract_code(response.content)
+            if extracted.code is not None:
+                first_code = first_code or extracted.code
+                last_code = extracted.code
+                stop, error = "answered", None
+            else:
+                stop, error = "answered", extracted.error
+            break
+        messages.append(_assistant_message(backend, response))
+        for call in response.tool_calls:
+            code = call.arguments.get("code") if isinstance(call.arguments, dict) else None
+            if isinstance(code, str) and code.strip():
+                first_code = first_code or code
+                last_code = code
+            result = await toolbox.call(call.name, call.arguments if isinstance(call.arguments, dict) else {})
+            messages.append(_tool_message(backend, call, result))
+            transcript.append({"role": "tool", "name": call.name, "content": result})
+        if completion >= token_budget:
+            stop = "token_budget"
+            break
+    if last_code is None and error is None:
+        error = "the agent produced no program"
+    return AgentResult(first_code, last_code, error, stop, rounds, dict(toolbox.calls), completion, prompt_tokens,
+                       transcript)

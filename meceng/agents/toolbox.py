@@ -1,0 +1,163 @@
+"""The tools an agent may call while it builds a model, and what they report.
+
+Every tool runs the agent's own program in the same isolated executor as the evaluation and
+reports only what that program produced: stage reached, error, a summary of its system and a few
+sampled outputs. Nothing of the ground truth is ever returned; the only task information used is
+what the description already states (end time and number of steps).
+"""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from meceng.agents.catalog import Catalog
+from meceng.tasks.base import SimSettings, TaskInstance
+from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.warm import WarmPool
+
+TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
+    {
+        "name": "simulate",
+        "description": ("Run a complete Exudyn program (as you would answer it) and report the stage it reached, "
+                        "its error if any, a summary of the system (items by type, degrees of freedom, redundant "
+                        "constraints, total mass, initial positions of the nodes) and the coordinates at a few "
+                        "times."),
+        "parameters": {"type": "object", "properties": {"code": {"type": "string", "description": "the program"}},
+                       "required": ["code"]},
+    },
+    {
+        "name": "self_check",
+        "description": ("Check a program for problems that need no reference solution: errors, redundant "
+                        "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
+                        "Returns the degrees of freedom and a list of findings."),
+        "parameters": {"type": "object", "properties": {"code": {"type": "string"}}, "required": ["code"]},
+    },
+    {
+        "name": "list_components",
+        "description": "The catalog of simulation components with one line each.",
+        "parameters": {"type": "object", "properties": {}},
+    },
+    {
+        "name": "component_docs",
+        "description": "Documentation and a working example for the named catalog components.",
+        "parameters": {"type": "object", "properties": {"names": {"type": "array", "items": {"type": "string"}}},
+                       "required": ["names"]},
+    },
+)
+
+SAMPLES = 5
+MAX_TEXT = 1500
+
+
+@dataclass
+class Toolbox:
+    """Tools bound to one task instance (its stated simulation time) and one executor."""
+
+    instance: TaskInstance
+    catalog: Catalog
+    limits: ExecutionLimits = field(default_factory=ExecutionLimits)
+    pool: WarmPool | None = None
+    calls: Counter[str] = field(default_factory=Counter)
+
+    @property
+    def schemas(self) -> tuple[dict[str, Any], ...]:
+        return TOOL_SCHEMAS
+
+    async def call(self, name: str, arguments: dict[str, Any]) -> str:
+        """Run a tool; unknown tools and bad arguments are answered, never raised."""
+        self.calls[name] += 1
+        try:
+            if name == "simulate":
+                return json.dumps(await self.simulate(str(arguments["code"])))
+            if name == "self_check":
+                return json.dumps(await self.self_check(str(arguments["code"])))
+            if name == "list_components":
+                return self.catalog.menu()
+            if name == "component_docs":
+                names = arguments.get("names") or []
+                if isinstance(names, str):
+                    names = [n.strip() for n in names.split(",")]
+                unknown = [n for n in names if n not in self.catalog]
+                text = self.catalog.context([n for n in names if n in self.catalog])
+                return text + (f"\n\nUnknown components: {', '.join(unknown)}" if unknown else "")
+        except KeyError as exc:
+            return json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"})
+        return json.dumps({"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in TOOL_SCHEMAS)}"})
+
+    async def _run(self, code: str) -> Execution:
+        # only the time span of the description; none of the ground truth's solver extras
+        stated = SimSettings(self.instance.sim.end_time, self.instance.sim.steps)
+        return await execute(code, stated.block(), self.limits, pool=self.pool)
+
+    async def simulate(self, code: str) -> dict[str, Any]:
+        run = await self._run(code)
+        report: dict[str, Any] = {"stage": run.stage, "error": _trim(run.error)}
+        if run.items is not None:
+            report["system"] = system_summary(run.items, run.system)
+        if run.times is not None and run.trajectory is not None and len(run.times):
+            report["samples"] = sample(run.times, run.trajectory)
+        return report
+
+    async def self_check(self, code: str) -> dict[str, Any]:
+        run = await self._run(code)
+        findings: list[str] = []
+        if run.error:
+            findings.append(f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}")
+        if run.system.get("redundantConstraints"):
+            findings.append(f"{run.system['redundantConstraints']} redundant constraint(s): the solver may fail")
+        if run.items is not None:
+            positions = [tuple(np.round(p, 9)) for p in _node_positions(run.items)]
+            duplicates = [p for p, n in Counter(positions).items() if n > 1]
+            if duplicates:
+                findings.append(f"several nodes start at the same position {list(duplicates[0])}")
+        if run.trajectory is not None:
+            if not np.all(np.isfinite(run.trajectory)):
+                findings.append("coordinates become NaN or infinite")
+            elif run.trajectory.size and np.max(np.abs(run.trajectory)) > 1e3:
+                findings.append(f"coordinates grow to {np.max(np.abs(run.trajectory)):.3g}: check units and loads")
+        return {"stage": run.stage, "degrees_of_freedom": run.system.get("degreeOfFreedom"),
+                "findings": findings or ["no problem found"]}
+
+
+def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:
+    if text is None or len(text) <= limit:
+        return text
+    return text[: limit // 2] + " [...] " + text[-limit // 2:]
+
+
+def _node_positions(items: dict[str, list[dict[str, Any]]]) -> list[list[float]]:
+    out = []
+    for node in items.get("nodes", []):
+        ref = node.get("referenceCoordinates") or []
+        ini = node.get("initialCoordinates") or [0.0] * len(ref)
+        if len(ref) >= 3 and "Ground" not in str(node.get("nodeType", "")):
+            out.append([float(r) + float(i) for r, i in zip(ref[:3], ini[:3], strict=False)])
+    return out
+
+
+def system_summary(items: dict[str, list[dict[str, Any]]], system: dict[str, Any]) -> dict[str, Any]:
+    """What the program built: item types, DOF, total mass, initial node positions."""
+    types = Counter(str(o.get("objectType")) for o in items.get("objects", []))
+    loads = Counter(str(load.get("loadType")) for load in items.get("loads", []))
+    total_mass = sum(float(o["mass"]) for o in items.get("objects", []) if isinstance(o.get("mass"), int | float))
+    return {
+        "objects": dict(types),
+        "loads": dict(loads),
+        "nodes": len(items.get("nodes", [])),
+        "markers": len(items.get("markers", [])),
+        "degrees_of_freedom": system.get("degreeOfFreedom"),
+        "redundant_constraints": system.get("redundantConstraints"),
+        "total_mass": round(total_mass, 9),
+        "initial_node_positions": [[round(x, 9) for x in p] for p in _node_positions(items)][:30],
+    }
+
+
+def sample(times: np.ndarray, q: np.ndarray, count: int = SAMPLES) -> list[dict[str, Any]]:
+    """q_ref + q of the first coordinates at ``count`` evenly spread times."""
+    picks = np.linspace(0, len(times) - 1, count).round().astype(int)
+    return [{"t": round(float(times[i]), 6), "q": [round(float(x), 6) for x in q[i, :12]]} for i in picks]
