@@ -322,7 +322,7 @@ class OllamaBackend:
             raw = await endpoint.client.chat(
                 model=self.settings.model,
                 messages=list(request.messages),
-                tools=list(request.tools) or None,
+                tools=[{"type": "function", "function": tool} for tool in request.tools] or None,
                 stream=False,
                 think=self.settings.think,
                 options=self.settings.options(),

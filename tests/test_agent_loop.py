@@ -1,0 +1,150 @@
+"""The self-validating agent against a fake Ollama server that scripts tool-calling conversations."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from fake_ollama import FakeOllama, chat_reply
+
+from meceng.agents.catalog import rigid_catalog
+from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import gold_code, gold_selection
+from meceng.agents.toolbox import Toolbox
+from meceng.pipeline import RunSettings, run_benchmark
+from meceng.tasks.registry import default_registry
+
+SLUG = "single_mass_oscillator"
+
+
+def tool_call(name: str, **arguments) -> dict:
+    body = chat_reply("")
+    body["message"]["tool_calls"] = [{"function": {"name": name, "arguments": arguments}}]
+    return body
+
+
+def broken(program: str) -> str:
+    return program.replace("mass=mass)", "mas=mass)")  # a hallucinated keyword: fails before assemble
+
+
+async def _run(tmp_path: Path, responder, max_rounds: int = 4) -> dict:
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="agent:1b", backend="ollama", hosts=(server.url,))
+        settings = RunSettings(llm=llm, only=(SLUG,), variations=1, out=tmp_path, run_name="agent", progress=False,
+                               agent="loop", max_rounds=max_rounds)
+        run_json = await run_benchmark(settings)
+        return {"run": json.loads(run_json.read_text()), "requests": server.requests}
+
+
+async def test_agent_repairs_its_program_after_simulating(tmp_path: Path) -> None:
+    instance = default_registry().get(SLUG).instance(0)
+
+    def responder(body):
+        messages = body["messages"]
+        prompt = messages[0]["content"]
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        assert body["tools"] and {t["function"]["name"] for t in body["tools"]} >= {"simulate", "self_check"}
+        tool_results = [m for m in messages if m["role"] == "tool"]
+        if not tool_results:
+            return 200, tool_call("simulate", code=broken(instance.reference_program)), {}
+        assert "TypeError" in tool_results[-1]["content"]  # the agent sees its own error
+        return 200, chat_reply("Fixed the keyword.\n" + gold_code(instance.reference_program)), {}
+
+    result = await _run(tmp_path, responder)
+    task = result["run"]["tasks"][0]
+    agent = task["agent"]
+    assert agent["first_overall"] is False and agent["first_failure"] == "finished_assemble"
+    assert task["overall"] is True
+    assert agent["rounds"] == 2 and agent["tool_calls"] == {"simulate": 1} and agent["stop_reason"] == "answered"
+    roles = [m["role"] for m in agent["transcript"]]
+    assert roles == ["user", "assistant", "tool", "assistant"]
+    summary = result["run"]["summary"]["agent"]
+    assert summary["first_overall"] == 0.0 and summary["final_overall"] == 1.0 and summary["uplift"] == 1.0
+    assert summary["repaired"] == 1
+    # the tool result went back as Ollama expects it
+    last = result["requests"][-1]["messages"]
+    assert last[-1]["role"] == "tool" and last[-1]["tool_name"] == "simulate"
+    assert last[-2]["role"] == "assistant" and last[-2]["tool_calls"][0]["function"]["name"] == "simulate"
+
+
+async def test_agent_without_tools_and_endless_agent_are_bounded(tmp_path: Path) -> None:
+    instance = default_registry().get(SLUG).instance(0)
+
+    def endless(body):
+        prompt = body["messages"][0]["content"]
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        return 200, tool_call("self_check", code=instance.reference_program), {}
+
+    result = await _run(tmp_path / "endless", endless, max_rounds=3)
+    agent = result["run"]["tasks"][0]["agent"]
+    assert agent["rounds"] == 3 and agent["stop_reason"] == "max_rounds"
+    assert agent["tool_calls"] == {"self_check": 3}
+    assert result["run"]["tasks"][0]["overall"] is True  # its last program is graded
+
+    def direct(body):
+        prompt = body["messages"][0]["content"]
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        return 200, chat_reply(gold_code(broken(instance.reference_program))), {}
+
+    result = await _run(tmp_path / "direct", direct)
+    task = result["run"]["tasks"][0]
+    assert task["agent"]["rounds"] == 1 and task["agent"]["tool_calls"] == {}
+    assert task["overall"] is False and task["agent"]["first_overall"] is False
+
+
+@pytest.mark.parametrize("tool", ["simulate", "self_check"])
+async def test_tools_report_the_agents_program_never_the_ground_truth(tool: str) -> None:
+    instance = default_registry().get("double_mass_oscillator").instance(2)
+    program = instance.reference_program
+    for name in ("mass1", "mass2", "length1"):
+        value = instance.params[name]
+        program = program.replace(f"\n{name} = {value!r}\n", f"\n{name} = {value * 1.37!r}\n")
+    toolbox = Toolbox(instance, rigid_catalog())
+    report = json.loads(await toolbox.call(tool, {"code": program}))
+    if tool == "simulate":
+        system = report["system"]
+        own_mass = (instance.params["mass1"] + instance.params["mass2"]) * 1.37
+        assert abs(system["total_mass"] - own_mass) < 1e-9
+        gt_mass = instance.params["mass1"] + instance.params["mass2"]
+        assert abs(system["total_mass"] - gt_mass) > 0.1
+        first_x = system["initial_node_positions"][0][0]
+        assert abs(first_x - instance.params["length1"] * 1.37) < 1e-9
+        assert report["samples"][0]["t"] == 0.0
+    else:
+        assert report["stage"] == "solved" and report["findings"] == ["no problem found"]
+    assert "reference" not in json.dumps(report).lower()
+
+
+async def test_agent_through_the_openai_compatible_backend(tmp_path: Path) -> None:
+    from fake_ollama import openai_reply
+
+    from meceng.agents.llm import OpenAIBackend
+
+    instance = default_registry().get(SLUG).instance(0)
+
+    def responder(body):
+        messages = body["messages"]
+        if "<components>" in messages[0]["content"]:
+            return 200, openai_reply(gold_selection(instance.required_components)), {}
+        assert body["tools"][0]["type"] == "function"
+        if not any(m["role"] == "tool" for m in messages):
+            reply = openai_reply("", finish_reason="tool_calls")
+            reply["choices"][0]["message"]["tool_calls"] = [{
+                "id": "call_1", "type": "function",
+                "function": {"name": "simulate", "arguments": json.dumps({"code": instance.reference_program})}}]
+            return 200, reply, {}
+        tool = next(m for m in messages if m["role"] == "tool")
+        assert tool["tool_call_id"] == "call_1" and '"stage": "solved"' in tool["content"]
+        return 200, openai_reply(gold_code(instance.reference_program)), {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="served", backend="openai", hosts=(server.url + "/v1",))
+        settings = RunSettings(llm=llm, only=(SLUG,), variations=1, out=tmp_path, run_name="oa", progress=False,
+                               agent="loop")
+        run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
+    task = json.loads(run_json.read_text())["tasks"][0]
+    assert task["overall"] is True and task["agent"]["rounds"] == 2 and task["agent"]["tool_calls"] == {"simulate": 1}
