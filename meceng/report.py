@@ -194,6 +194,20 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                             [[m, r, "" if s is None else f"{s:g}", f"{100 * v:.1f}"] for m, r, s, v in points])
             sections.insert(1, ("Success vs release date (Fig. 7)", md, ht, "release.png"))
 
+    agent_rows = []
+    for run in runs:
+        block = run.summary.get("agent")
+        if block:
+            agent_rows.append([run.label, str(block["tasks"]), f"{100 * block['first_overall']:.1f}",
+                               f"{100 * block['final_overall']:.1f}", f"{100 * block['uplift']:+.1f}",
+                               "–" if block["rounds_per_solved"] is None else f"{block['rounds_per_solved']:.2f}",
+                               "–" if block["tokens_per_solved"] is None else f"{block['tokens_per_solved']:.0f}",
+                               ", ".join(f"{k} {v}" for k, v in sorted(block["tool_calls"].items())) or "none"])
+    if agent_rows:
+        md, ht = _table(["run", "n", "first answer (%)", "after the loop (%)", "uplift (points)",
+                         "rounds per solved", "tokens per solved", "tool calls"], agent_rows)
+        sections.append(("Self-validating agent", md, ht, None))
+
     intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
              "Wilson interval in brackets; infrastructure failures are left out of the rates.")
     md_doc = ["# MecEng report", "", intro, ""]
