@@ -25,7 +25,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from simulate import SOLVE, simulate
+from simulate import SOLVE, simulate, simulate_bodies
 
 from meceng.tasks.registry import default_registry
 
@@ -33,22 +33,6 @@ SEEDS = (0, 1, 2)
 
 #: Added before ``mbs.Assemble()``: position, velocity (and for rigid bodies angular velocity and
 #: rotation matrix) sensors for every body, in creation order, recorded at every step.
-_SENSORS = """
-_bodySensors = {}
-for _o in range(mbs.systemData.NumberOfObjects()):
-    _type = mbs.GetObject(_o)['objectType']
-    if _type in ('MassPoint', 'RigidBody'):
-        _names = ['Position', 'Velocity']
-        if _type == 'RigidBody':
-            _names += ['AngularVelocity', 'RotationMatrix']
-        _bodySensors[_o] = {
-            _name: mbs.AddSensor(SensorBody(bodyNumber=_o, storeInternal=True, writeToFile=False,
-                                            outputVariableType=getattr(exu.OutputVariableType, _name)))
-            for _name in _names}
-mbs.variables['_bodySensors'] = _bodySensors
-"""
-
-
 def _program(slug: str, seed: int, *, extra: str = "", **overrides) -> tuple[dict, str]:
     model = default_registry().get(slug)
     values = dict(model.sample_params(seed))
@@ -60,24 +44,8 @@ def _program(slug: str, seed: int, *, extra: str = "", **overrides) -> tuple[dic
 
 
 def _bodies(program: str) -> tuple[np.ndarray, np.ndarray, list[dict[str, np.ndarray]]]:
-    """Run with body sensors; returns (times, q_total, per body in creation order a dict of arrays)."""
-    assert program.count("mbs.Assemble()") == 1
-    program = program.replace("mbs.Assemble()", _SENSORS + "mbs.Assemble()")
-    program = program.replace(SOLVE, f"simulationSettings.solution.sensors.writePeriod = 0\n{SOLVE}")
-    times, q, mbs = simulate(program)
-    bodies = []
-    for _obj, sensors in sorted(mbs.variables["_bodySensors"].items()):
-        data = {}
-        for name, sensor in sensors.items():
-            stored = np.asarray(mbs.GetSensorStoredData(sensor))
-            _, first = np.unique(stored[:, 0], return_index=True)
-            stored = stored[np.sort(first)]
-            assert len(stored) == len(times) and np.allclose(stored[:, 0], times)
-            values = stored[:, 1:]
-            data[name] = values.reshape(-1, 3, 3) if name == "RotationMatrix" else values
-        bodies.append(data)
-    return times, q, bodies
-
+    """Body sensors on every mass point and rigid body, in creation order."""
+    return simulate_bodies(program, mass_points=True)
 
 def _crossings(t: np.ndarray, gap: np.ndarray) -> list[tuple[int, float, str]]:
     """Sign changes of a contact gap: (index before, interpolation factor, 'close'|'open')."""

@@ -23,6 +23,7 @@ from scipy.optimize import root
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from simulate import SOLVE, simulate
+from simulate import simulate_bodies as shared_simulate_bodies
 
 from meceng.tasks.registry import default_registry
 
@@ -85,37 +86,10 @@ def simulate_qv(program: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return times[first], np.array([rows[i][1] for i in first]), np.array([rows[i][2] for i in first])
 
 
-_BODY_SENSORS = """
-_bodySensors = {}
-for _o in range(mbs.systemData.NumberOfObjects()):
-    if mbs.GetObject(_o)['objectType'] == 'RigidBody':
-        _bodySensors[_o] = {
-            _name: mbs.AddSensor(SensorBody(bodyNumber=_o, storeInternal=True, writeToFile=False,
-                                            outputVariableType=getattr(exu.OutputVariableType, _name)))
-            for _name in ('Position', 'Velocity', 'AngularVelocity', 'RotationMatrix')}
-mbs.variables['_bodySensors'] = _bodySensors
-"""
-
-
 def simulate_bodies(program: str) -> tuple[np.ndarray, list[dict[str, np.ndarray]]]:
-    """Run with body sensors; per rigid body (creation order) its Position, Velocity,
-    AngularVelocity (n, 3) and RotationMatrix (n, 3, 3) in global coordinates."""
-    assert program.count("mbs.Assemble()") == 1
-    program = program.replace("mbs.Assemble()", _BODY_SENSORS + "mbs.Assemble()")
-    program = program.replace(SOLVE, f"simulationSettings.solution.sensors.writePeriod = 0\n{SOLVE}")
-    times, _, mbs = simulate(program)
-    bodies = []
-    for _, sensors in sorted(mbs.variables["_bodySensors"].items()):
-        data = {}
-        for name, sensor in sensors.items():
-            stored = np.asarray(mbs.GetSensorStoredData(sensor))
-            _, first = np.unique(stored[:, 0], return_index=True)
-            stored = stored[np.sort(first)]
-            assert len(stored) == len(times) and np.allclose(stored[:, 0], times)
-            data[name] = stored[:, 1:].reshape(-1, 3, 3) if name == "RotationMatrix" else stored[:, 1:]
-        bodies.append(data)
+    """Body sensors on every rigid body, in creation order (the shared helper, without q)."""
+    times, _, bodies = shared_simulate_bodies(program)
     return times, bodies
-
 
 def cuboid(density: float, sides) -> tuple[float, np.ndarray]:
     """Mass and principal inertia (about the centre, local axes) of a homogeneous cuboid."""

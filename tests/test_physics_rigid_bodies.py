@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-from simulate import SOLVE, simulate
+from simulate import SOLVE, cuboid, kinetic_energy, simulate, simulate_bodies
 
 from meceng.tasks.registry import default_registry
 
@@ -22,18 +22,6 @@ SEEDS = (0, 1, 2, 3)
 
 #: Added before ``mbs.Assemble()``: sensors for the centre of mass (the reference point of every
 #: body here), its velocity, the global angular velocity and the rotation matrix of each rigid body.
-_SENSORS = """
-_bodySensors = {}
-for _o in range(mbs.systemData.NumberOfObjects()):
-    if mbs.GetObject(_o)['objectType'] == 'RigidBody':
-        _bodySensors[_o] = {
-            _name: mbs.AddSensor(SensorBody(bodyNumber=_o, storeInternal=True, writeToFile=False,
-                                            outputVariableType=getattr(exu.OutputVariableType, _name)))
-            for _name in ('Position', 'Velocity', 'AngularVelocity', 'RotationMatrix')}
-mbs.variables['_bodySensors'] = _bodySensors
-"""
-
-
 def _program(slug: str, values: dict, seed: int, *, conservative: bool = False) -> str:
     program = default_registry().get(slug).reference_program(values, "", seed)
     if conservative:  # no numerical damping, so energy is conserved to integration accuracy
@@ -47,40 +35,6 @@ def _params(slug: str, seed: int, **changes) -> dict:
     values = dict(default_registry().get(slug).sample_params(seed))
     values.update(changes)
     return values
-
-
-def simulate_bodies(program: str) -> tuple[np.ndarray, np.ndarray, list[dict[str, np.ndarray]]]:
-    """Run with body sensors; returns (times, q_total, per rigid body in creation order:
-    {'Position': (n,3), 'Velocity': (n,3), 'AngularVelocity': (n,3), 'RotationMatrix': (n,3,3)})."""
-    assert program.count("mbs.Assemble()") == 1
-    program = program.replace("mbs.Assemble()", _SENSORS + "mbs.Assemble()")
-    program = program.replace(SOLVE, f"simulationSettings.solution.sensors.writePeriod = 0\n{SOLVE}")
-    times, q, mbs = simulate(program)
-    bodies = []
-    for _obj, sensors in sorted(mbs.variables["_bodySensors"].items()):
-        data = {}
-        for name, sensor in sensors.items():
-            stored = np.asarray(mbs.GetSensorStoredData(sensor))
-            _, first = np.unique(stored[:, 0], return_index=True)
-            stored = stored[np.sort(first)]
-            assert len(stored) == len(times) and np.allclose(stored[:, 0], times)
-            values = stored[:, 1:]
-            data[name] = values.reshape(-1, 3, 3) if name == "RotationMatrix" else values
-        bodies.append(data)
-    return times, q, bodies
-
-
-def cuboid(density: float, sides: tuple[float, float, float]) -> tuple[float, np.ndarray]:
-    """Mass and principal inertia (about the centre, local axes) of a homogeneous cuboid."""
-    a, b, c = sides
-    m = density * a * b * c
-    return m, np.diag([m * (b * b + c * c), m * (a * a + c * c), m * (a * a + b * b)]) / 12
-
-
-def kinetic_energy(body: dict[str, np.ndarray], m: float, j_local: np.ndarray) -> np.ndarray:
-    v, w, rot = body["Velocity"], body["AngularVelocity"], body["RotationMatrix"]
-    j_global = rot @ j_local @ np.transpose(rot, (0, 2, 1))
-    return 0.5 * m * np.sum(v * v, axis=1) + 0.5 * np.einsum("ni,nij,nj->n", w, j_global, w)
 
 
 def _planar_angle(q: np.ndarray, i0: int, axis: int) -> np.ndarray:
