@@ -148,3 +148,25 @@ async def test_agent_through_the_openai_compatible_backend(tmp_path: Path) -> No
         run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
     task = json.loads(run_json.read_text())["tasks"][0]
     assert task["overall"] is True and task["agent"]["rounds"] == 2 and task["agent"]["tool_calls"] == {"simulate": 1}
+
+
+async def test_self_check_energy_is_the_programs_own() -> None:
+    """Energy from the agent's program: kept by a pendulum, lost by a damped oscillator."""
+    registry = default_registry()
+    pendulum = registry.get("single_pendulum").instance(1)
+    toolbox = Toolbox(pendulum, rigid_catalog())
+    report = json.loads(await toolbox.call("self_check", {"code": pendulum.reference_program}))
+    p = pendulum.params
+    import math
+
+    height = -p["length"] * math.cos(math.radians(p["angle_deg"]))
+    assert abs(report["energy"]["start"] - p["mass"] * p["gravity"] * height) < 1e-9  # m g y at rest
+    assert abs(report["energy"]["relative_change"]) < 1e-4
+
+    oscillator = registry.get("single_mass_oscillator")
+    values = oscillator.sample_params(1)
+    values["damping"] = 5.0
+    damped = oscillator.reference_program(values, "", 1)
+    report = json.loads(await Toolbox(oscillator.instance(1), rigid_catalog()).call("self_check", {"code": damped}))
+    assert abs(report["energy"]["start"] - 0.5 * values["stiffness"] * values["displacement"] ** 2) < 1e-9
+    assert report["energy"]["relative_change"] < -0.5

@@ -52,6 +52,44 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
 
 SAMPLES = 5
 MAX_TEXT = 1500
+ENERGY_MARK = "MECENG_ENERGY "
+
+#: Appended around the solver call by ``self_check``: total mechanical energy at start and end,
+#: from Exudyn's own body kinetic energies and spring potentials plus the potential of gravity and
+#: constant forces. Printed with a marker; it only ever describes the agent's own program.
+ENERGY_CODE = """
+def _meceng_energy(mbs):
+    import json as _json
+    import numpy as _np
+    _out = exu.OutputVariableType
+    energy = 0.0
+    for _i in range(mbs.systemData.NumberOfObjects()):
+        _type = mbs.GetObject(_i)['objectType']
+        try:
+            if _type in ('MassPoint', 'RigidBody', 'MassPoint2D', 'RigidBody2D'):
+                energy += mbs.GetObjectOutputBody(_i, _out.KineticEnergy, localPosition=[0, 0, 0])
+            elif 'SpringDamper' in _type:
+                energy += mbs.GetObjectOutput(_i, _out.PotentialEnergy)
+        except Exception:
+            pass
+    for _j in range(mbs.systemData.NumberOfLoads()):
+        _load = mbs.GetLoad(_j)
+        _marker = mbs.GetMarker(_load['markerNumber'])
+        _body = _marker.get('bodyNumber')
+        if _body is None or _load.get('loadVectorUserFunction', 0) != 0:
+            continue
+        _vector = _np.asarray(_load['loadVector'], dtype=float)
+        if _load['loadType'] == 'MassProportional':
+            _object = mbs.GetObject(_body)
+            _com = list(_object.get('centerOfMass', [0, 0, 0]))
+            _pos = mbs.GetObjectOutputBody(_body, _out.Position, localPosition=_com)
+            energy -= float(_object.get('mass', 0.0)) * float(_np.dot(_vector, _pos))
+        elif _load['loadType'] == 'ForceVector' and not _load.get('bodyFixed', False):
+            _local = list(_marker.get('localPosition', [0, 0, 0]))
+            _pos = mbs.GetObjectOutputBody(_body, _out.Position, localPosition=_local)
+            energy -= float(_np.dot(_vector, _pos))
+    return energy
+"""
 
 
 @dataclass
@@ -89,10 +127,15 @@ class Toolbox:
             return json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"})
         return json.dumps({"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in TOOL_SCHEMAS)}"})
 
-    async def _run(self, code: str) -> Execution:
+    async def _run(self, code: str, energy: bool = False) -> Execution:
         # only the time span of the description; none of the ground truth's solver extras
-        stated = SimSettings(self.instance.sim.end_time, self.instance.sim.steps)
-        return await execute(code, stated.block(), self.limits, pool=self.pool)
+        block = SimSettings(self.instance.sim.end_time, self.instance.sim.steps).block()
+        if energy:
+            solve = "mbs.SolveDynamic(simulationSettings)"
+            block = ENERGY_CODE + block.replace(solve, (
+                "_e0 = _meceng_energy(mbs)\n" + solve + "\n"
+                f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
+        return await execute(code, block, self.limits, pool=self.pool)
 
     async def simulate(self, code: str) -> dict[str, Any]:
         run = await self._run(code)
@@ -104,8 +147,9 @@ class Toolbox:
         return report
 
     async def self_check(self, code: str) -> dict[str, Any]:
-        run = await self._run(code)
+        run = await self._run(code, energy=True)
         findings: list[str] = []
+        energy = _energy(run.stdout_tail)
         if run.error:
             findings.append(f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}")
         if run.system.get("redundantConstraints"):
@@ -120,8 +164,26 @@ class Toolbox:
                 findings.append("coordinates become NaN or infinite")
             elif run.trajectory.size and np.max(np.abs(run.trajectory)) > 1e3:
                 findings.append(f"coordinates grow to {np.max(np.abs(run.trajectory)):.3g}: check units and loads")
-        return {"stage": run.stage, "degrees_of_freedom": run.system.get("degreeOfFreedom"),
-                "findings": findings or ["no problem found"]}
+        report: dict[str, Any] = {"stage": run.stage, "degrees_of_freedom": run.system.get("degreeOfFreedom"),
+                                   "findings": findings or ["no problem found"]}
+        if energy is not None:
+            start, end = energy
+            scale = max(abs(start), abs(end), 1e-12)
+            report["energy"] = {"start": start, "end": end, "relative_change": (end - start) / scale,
+                                "note": ("kinetic + spring + gravity/constant-force potential; a system without "
+                                         "damping, contact losses or driving loads should keep it nearly constant")}
+        return report
+
+
+def _energy(stdout: str) -> tuple[float, float] | None:
+    for line in reversed(stdout.splitlines()):
+        if line.startswith(ENERGY_MARK):
+            try:
+                start, end = json.loads(line[len(ENERGY_MARK):])
+                return float(start), float(end)
+            except (ValueError, TypeError):
+                return None
+    return None
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:
