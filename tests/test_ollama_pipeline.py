@@ -213,3 +213,23 @@ async def test_flaky_server_loses_no_task(tmp_path: Path) -> None:
     if graded:
         assert summary["rates"]["overall"] == 1.0  # infrastructure failures are not model failures
     assert len(server.requests) > 40  # retries happened
+
+
+async def test_full_context_and_thinking_are_recorded() -> None:
+    from meceng.agents.catalog import rigid_catalog
+    from meceng.agents.steps import choose_components
+
+    instance = default_registry().get("single_pendulum").instance(0)
+
+    def full(body):
+        reply = chat_reply(gold_selection(instance.required_components), thinking="first the bodies...",
+                           prompt_tokens=4000, completion_tokens=200)
+        return 200, reply, {}
+
+    async with FakeOllama(full) as server:
+        backend = OllamaBackend(LLMSettings(model="m", backend="ollama", hosts=(server.url,), num_ctx=4096))
+        selection = await choose_components(backend, instance, rigid_catalog())
+        await backend.aclose()
+    assert selection.error is None
+    assert selection.meta["context_limit_hit"] is True
+    assert selection.meta["thinking"] == "first the bodies..." and selection.meta["thinking_chars"] == 19

@@ -158,6 +158,7 @@ class ChatResponse:
             "wall_time_s": round(self.wall_time_s, 4),
             "attempts": self.attempts,
             "endpoint": self.endpoint,
+            "thinking_chars": len(self.thinking),
         }
 
 

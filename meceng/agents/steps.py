@@ -65,7 +65,7 @@ async def choose_components(
         return Selection(prompt, "", (), error=failure, infrastructure_error=failure)
     parsed = parse_components(response.content, catalog.names)
     return Selection(prompt, response.content, parsed.names, parsed.unknown, parsed.error,
-                     meta=response.meta())
+                     meta=_meta(response, backend))
 
 
 async def generate_code(
@@ -81,4 +81,13 @@ async def generate_code(
     error = extracted.error
     if response.truncated and extracted.code is None:
         error = f"{error} (answer truncated: done_reason 'length')"
-    return Generation(prompt, response.content, extracted.code, error, meta=response.meta())
+    return Generation(prompt, response.content, extracted.code, error, meta=_meta(response, backend))
+
+
+def _meta(response: ChatResponse, backend: Backend) -> dict[str, Any]:
+    """Response metadata, the model's thinking text, and whether the context window was full."""
+    meta = response.meta()
+    meta["thinking"] = response.thinking
+    num_ctx = getattr(getattr(backend, "settings", None), "num_ctx", None)
+    meta["context_limit_hit"] = bool(num_ctx and response.context_used >= num_ctx)
+    return meta

@@ -98,6 +98,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
             "completion": _stats([c.get("completion_tokens", 0) for c in calls]),
             "context_used_p95": _percentile([c.get("context_used", 0) for c in calls], 95),
             "truncated_answers": truncated,
+            "context_limit_hits": sum(1 for c in calls if c.get("context_limit_hit")),
         },
         "agent": agent_summary(records),
         "timing": {
