@@ -38,7 +38,7 @@ def configure_logging(log_file: Path | None = None, level: str = "INFO", console
         handler = logging.StreamHandler(sys.stderr)
         renderer = structlog.dev.ConsoleRenderer(colors=sys.stderr.isatty())
         handler.setFormatter(structlog.stdlib.ProcessorFormatter(processor=renderer, foreign_pre_chain=shared))
-        handler.setLevel("WARNING" if not sys.stderr.isatty() else level)
+        handler.setLevel("WARNING")  # the progress bar owns the terminal; info goes to the run's log.jsonl
         root.addHandler(handler)
     if log_file is not None:
         log_file.parent.mkdir(parents=True, exist_ok=True)
