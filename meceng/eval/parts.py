@@ -1,0 +1,145 @@
+"""Part metrics for level 3a (paper section 3.3), as pure functions of what two meshed parts are.
+
+Order: choose part components -> interface names -> material (E, nu, rho exact) -> mass (1 %) ->
+mesh (1 %) -> eigenfrequencies (first three, relative vector norm, 5 %) -> part overall.
+
+The mesh metric compares the two surface meshes with PyMeshLab: the mean distance of sampled
+points of each surface to the other one (both directions; the mean, not the max, because
+faceting hides small changes in the max), times the ground truth's surface area, is the volume
+between the surfaces; normalised by the ground truth's volume it must stay below 1 %.
+
+Not wired into the pipeline yet: the level 3a part runner and part task models come next.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from meceng.eval.chain import StageResult
+from meceng.eval.components import check_components
+
+PART_STAGES = ("choose_part_components", "interface_name_match", "material_match", "mass_match", "mesh_match",
+               "eigenfrequencies_match")
+
+#: An extrusion can make a box or a cylinder (paper: "extrusion is considered equally correct").
+PART_ALTERNATIVES: dict[str, tuple[str, ...]] = {"Box": ("Extrude",), "Cylinder": ("Extrude",)}
+
+
+@dataclass(frozen=True)
+class PartData:
+    """What a meshed part is: interfaces, material, mass, surface, eigenfrequencies."""
+
+    interfaces: tuple[str, ...]
+    youngs_modulus: float
+    poissons_ratio: float
+    density: float
+    mass: float
+    vertices: np.ndarray  # (n, 3) surface points
+    triangles: np.ndarray  # (m, 3) indices into vertices
+    eigenfrequencies: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+
+@dataclass(frozen=True)
+class PartTolerances:
+    mass: float = 0.01
+    mesh: float = 0.01
+    eigenfrequencies: float = 0.05
+    compared_frequencies: int = 3
+    samples: int = 20000
+
+
+def surface_area(vertices: np.ndarray, triangles: np.ndarray) -> float:
+    a, b, c = (vertices[triangles[:, k]] for k in range(3))
+    return float(0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum())
+
+
+def enclosed_volume(vertices: np.ndarray, triangles: np.ndarray) -> float:
+    """Volume of a closed, consistently oriented triangle surface (divergence theorem)."""
+    a, b, c = (vertices[triangles[:, k]] for k in range(3))
+    return float(abs(np.einsum("ij,ij->i", a, np.cross(b, c)).sum()) / 6.0)
+
+
+def surface_distance(candidate: PartData, reference: PartData, samples: int = 20000) -> dict[str, float]:
+    """Mean distances between the two surfaces in both directions, and the relative volume between."""
+    import pymeshlab
+
+    meshes = pymeshlab.MeshSet()
+    meshes.add_mesh(pymeshlab.Mesh(vertex_matrix=np.asarray(candidate.vertices, dtype=float),
+                                   face_matrix=np.asarray(candidate.triangles, dtype=np.int32)))
+    meshes.add_mesh(pymeshlab.Mesh(vertex_matrix=np.asarray(reference.vertices, dtype=float),
+                                   face_matrix=np.asarray(reference.triangles, dtype=np.int32)))
+    forward = meshes.get_hausdorff_distance(sampledmesh=0, targetmesh=1, samplevert=True, sampleface=True,
+                                            samplenum=samples)
+    backward = meshes.get_hausdorff_distance(sampledmesh=1, targetmesh=0, samplevert=True, sampleface=True,
+                                             samplenum=samples)
+    mean = 0.5 * (forward["mean"] + backward["mean"])
+    area = surface_area(reference.vertices, reference.triangles)
+    volume = enclosed_volume(reference.vertices, reference.triangles)
+    return {"mean_candidate_to_reference": float(forward["mean"]),
+            "mean_reference_to_candidate": float(backward["mean"]), "mean": float(mean),
+            "max": float(max(forward["max"], backward["max"])),
+            "relative_volume_between": float(mean * area / volume) if volume > 0 else float("inf")}
+
+
+def relative_frequency_error(candidate: np.ndarray, reference: np.ndarray, count: int = 3) -> float:
+    """|f_llm - f_gt| / |f_gt| over the first ``count`` eigenfrequencies."""
+    cand = np.asarray(candidate, dtype=float)[:count]
+    ref = np.asarray(reference, dtype=float)[:count]
+    if len(cand) < count or len(ref) < count:
+        return float("inf")
+    return float(np.linalg.norm(cand - ref) / np.linalg.norm(ref))
+
+
+def evaluate_part(
+    candidate: PartData | None,
+    reference: PartData,
+    *,
+    selected: Iterable[str] | None,
+    required: Iterable[str],
+    dependencies: Mapping[str, Iterable[str]],
+    failure: str | None = None,
+    tolerances: PartTolerances | None = None,
+) -> tuple[StageResult, ...]:
+    """The part stages in the paper's order; ``candidate`` None means the part was not produced
+    (no maxh, meshing failed, crash): every stage after the component choice fails with ``failure``."""
+    tol = tolerances or PartTolerances()
+    stages: list[StageResult] = []
+    if selected is None:
+        stages.append(StageResult("choose_part_components", None, "not applicable: no component selection"))
+    else:
+        chosen = set(selected)
+        for name, alternatives in PART_ALTERNATIVES.items():
+            if chosen & set(alternatives):
+                chosen.add(name)
+        check = check_components(chosen, required, dependencies)
+        stages.append(StageResult("choose_part_components", check.passed, check.detail))
+    if candidate is None:
+        reason = failure or "the program produced no meshed part"
+        stages += [StageResult(name, False, reason) for name in PART_STAGES[1:]]
+        return tuple(stages)
+
+    names_ok = sorted(candidate.interfaces) == sorted(reference.interfaces)
+    stages.append(StageResult("interface_name_match", names_ok,
+                              f"interfaces {sorted(candidate.interfaces)}"
+                              + ("" if names_ok else f", expected {sorted(reference.interfaces)}")))
+    material = (candidate.youngs_modulus, candidate.poissons_ratio, candidate.density)
+    expected = (reference.youngs_modulus, reference.poissons_ratio, reference.density)
+    stages.append(StageResult("material_match", material == expected,
+                              f"E, nu, rho = {material}" + ("" if material == expected else f", expected {expected}")))
+    mass_error = abs(candidate.mass - reference.mass) / reference.mass
+    stages.append(StageResult("mass_match", mass_error <= tol.mass,
+                              f"mass {candidate.mass:.6g} kg vs {reference.mass:.6g} kg ({100 * mass_error:.2f} %)"))
+    distance = surface_distance(candidate, reference, tol.samples)
+    mesh_error = distance["relative_volume_between"]
+    stages.append(StageResult("mesh_match", mesh_error <= tol.mesh,
+                              f"volume between the surfaces {100 * mesh_error:.2f} % of the part's volume "
+                              f"(mean distance {distance['mean']:.3g} m)"))
+    frequency_error = relative_frequency_error(candidate.eigenfrequencies, reference.eigenfrequencies,
+                                               tol.compared_frequencies)
+    stages.append(StageResult("eigenfrequencies_match", frequency_error <= tol.eigenfrequencies,
+                              f"first {tol.compared_frequencies} eigenfrequencies differ by "
+                              f"{100 * frequency_error:.2f} %"))
+    return tuple(stages)
