@@ -43,6 +43,8 @@ class ExecutionLimits:
     keep_scratch: bool = False
     guard: bool = True
     isolate_network: bool = True
+    mode: str = "rigid"  # "part": a level 3a program, captured by the part runner
+    n_modes: int = 6
 
 
 @dataclass(frozen=True)
@@ -62,6 +64,8 @@ class Execution:
     times: np.ndarray | None = None
     trajectory: np.ndarray | None = None
     warnings: tuple[str, ...] = ()
+    part: dict[str, Any] | None = None
+    surface: tuple[np.ndarray, np.ndarray] | None = None
     stdout_tail: str = ""
     stderr_tail: str = ""
     returncode: int | None = None
@@ -211,7 +215,8 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
     job = scratch / "job.json"
     token = secrets.token_hex(16)
     job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
-                               "guard": limits.guard, "isolate_network": limits.isolate_network}))
+                               "guard": limits.guard, "isolate_network": limits.isolate_network,
+                               "mode": limits.mode, "n_modes": limits.n_modes}))
     (scratch / "program.py").write_text(program)
     return job, token
 
@@ -279,8 +284,16 @@ def _collect(
     if traj_path.exists():
         data = np.load(traj_path)
         times, trajectory = data[:, 0], data[:, 1:]
+    part = result.get("part")
+    surface = None
+    part_path = scratch / f"part-{token}.npz"
+    if part is not None and part_path.exists():
+        with np.load(part_path) as data:
+            surface = (data["vertices"], data["triangles"])
     error = result.get("error")
     return Execution(
+        part=part,
+        surface=surface,
         stage=str(result.get("stage", last_stage)),
         error=error,
         error_kind="exception" if error else None,

@@ -201,6 +201,10 @@ def run(job_path: Path) -> int:
     job = json.loads(job_path.read_text())
     job_path.unlink()  # the token in it must not be readable by the program
     workdir = job_path.parent
+    if job.get("mode") == "part":
+        from meceng.tools.part_runner import run_part
+
+        return run_part(job, workdir)
     harness = Harness(workdir, token=str(job.get("token", "")))
     result: dict[str, Any] = {"stage": "started", "error": None, "error_type": None, "warnings": []}
     t_start = time.perf_counter()

@@ -1,0 +1,119 @@
+"""The child side for level 3a part programs: run the program, capture the meshed part.
+
+The harness wraps ``FEMinterface.ImportMeshFromNGsolve`` (material and interface names as the
+program gave them) and the mode computations (fewer than ``n_modes`` eigenmodes are silently
+raised, so that parts stay comparable). After the program it reads from the program's own
+FEMinterface: mass, eigenfrequencies and the surface triangulation, and writes them next to the
+result under the job's token, like the rigid runner.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from meceng.tools import guard
+
+STAGES = ("started", "meshed", "reduced")
+
+
+def _describe(exc: BaseException) -> str:
+    if isinstance(exc, SystemExit):
+        return f"program called exit({exc.code!r})"
+    return f"{type(exc).__name__}: {exc}"
+
+
+def run_part(job: dict[str, Any], workdir: Path) -> int:
+    # trusted libraries first: netgen loads its OCC kernel through ctypes, which the guard refuses
+    import netgen.occ  # noqa: F401
+    import ngsolve  # noqa: F401
+    from exudyn.FEM import FEMinterface
+
+    token = str(job.get("token", ""))
+    n_modes = int(job.get("n_modes", 6))
+    state: dict[str, Any] = {"stage": "started", "fem": None, "material": None, "interfaces": None,
+                             "modes_requested": None}
+    warnings: list[str] = []
+    stage_log = open(workdir / "stage.log", "a", buffering=1)  # noqa: SIM115 - kept open for the run
+    stage_log.write("started\n")
+
+    original_import = FEMinterface.ImportMeshFromNGsolve
+
+    def import_mesh(fem: Any, mesh: Any, density: float, youngsModulus: float, poissonsRatio: float,
+                    *args: Any, **kwargs: Any) -> Any:
+        out = original_import(fem, mesh, density, youngsModulus, poissonsRatio, *args, **kwargs)
+        state.update(fem=fem, material=(float(youngsModulus), float(poissonsRatio), float(density)),
+                     interfaces=tuple(kwargs.get("boundaryNamesList") or ()), stage="meshed")
+        stage_log.write("meshed\n")
+        return out
+
+    def raise_modes(name: str) -> None:
+        original = getattr(FEMinterface, name)
+
+        def wrapped(fem: Any, *args: Any, **kwargs: Any) -> Any:
+            positional = args[1] if len(args) > 1 else None  # (boundaryNodesList, nEigenModes, ...)
+            requested = kwargs.get("nEigenModes", positional)
+            if requested is not None and int(requested) < n_modes:
+                if "nEigenModes" in kwargs:
+                    kwargs["nEigenModes"] = n_modes
+                else:
+                    args = (args[0], n_modes, *args[2:])
+            state["modes_requested"] = requested
+            out = original(fem, *args, **kwargs)
+            state["stage"] = "reduced"
+            stage_log.write("reduced\n")
+            return out
+
+        setattr(FEMinterface, name, wrapped)
+
+    FEMinterface.ImportMeshFromNGsolve = import_mesh
+    for name in ("ComputeHurtyCraigBamptonModes", "ComputeHurtyCraigBamptonModesNGsolve"):
+        if hasattr(FEMinterface, name):
+            raise_modes(name)
+
+    set_guard = guard.install(str(workdir), warnings.append) if job.get("guard", True) else (lambda active: None)
+    result: dict[str, Any] = {"mode": "part", "error": None, "error_type": None}
+    t0 = time.perf_counter()
+    namespace: dict[str, Any] = {"__name__": "__main__"}
+    try:
+        set_guard(True)
+        exec(compile(job["program"], str(workdir / "program.py"), "exec"), namespace)
+    except BaseException as exc:  # every error of the program is a verdict
+        result.update(error=_describe(exc), error_type=type(exc).__name__)
+    finally:
+        set_guard(False)
+    result["program_time"] = time.perf_counter() - t0
+    fem = state["fem"]
+    if fem is None and result["error"] is None:
+        result.update(error="the program never called FEMinterface.ImportMeshFromNGsolve", error_type="NoMesh")
+    if fem is not None:
+        try:
+            result["part"] = _describe_part(fem, state, workdir, token)
+        except Exception as exc:  # a half-built part is a verdict too
+            result.update(error=f"could not read the part: {_describe(exc)}", error_type=type(exc).__name__)
+    result.update(stage=state["stage"], warnings=warnings, token=token)
+    tmp = workdir / f"result-{token}.json.tmp"
+    tmp.write_text(json.dumps(result))
+    os.replace(tmp, workdir / f"result-{token}.json")
+    return 0
+
+
+def _describe_part(fem: Any, state: dict[str, Any], workdir: Path, token: str) -> dict[str, Any]:
+    triangles = np.asarray(fem.GetSurfaceTriangles(), dtype=np.int64)
+    nodes = np.asarray(fem.GetNodePositionsAsArray(), dtype=float)
+    used, compact = np.unique(triangles, return_inverse=True)
+    np.savez(workdir / f"part-{token}.npz", vertices=nodes[used], triangles=compact.reshape(triangles.shape))
+    frequencies: list[float] = []
+    try:
+        frequencies = [float(f) for f in fem.GetEigenFrequenciesHz()]
+    except Exception:  # no modes computed: the eigenfrequency metric says so
+        frequencies = []
+    youngs, poisson, density = state["material"]
+    return {"interfaces": list(state["interfaces"]), "youngs_modulus": youngs, "poissons_ratio": poisson,
+            "density": density, "mass": float(fem.GetRigidBodyInertia().Mass()), "eigenfrequencies": frequencies,
+            "modes_requested": state["modes_requested"], "nodes": len(nodes), "surface_triangles": len(triangles)}
