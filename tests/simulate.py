@@ -8,7 +8,65 @@ from __future__ import annotations
 
 import numpy as np
 
+from meceng.tasks.registry import default_registry
+
 SOLVE = "mbs.SolveDynamic(simulationSettings)"
+
+
+def params(slug: str, seed: int, **changes) -> dict:
+    """The sampled parameters of a task instance, with some of them changed."""
+    values = dict(default_registry().get(slug).sample_params(seed))
+    values.update(changes)
+    return values
+
+
+def program_for(slug: str, values: dict, seed: int = 0) -> str:
+    """The ground-truth program of ``slug`` for the given parameter values."""
+    return default_registry().get(slug).reference_program(values, "", seed)
+
+
+def reference(slug: str, seed: int, **changes) -> tuple[dict, str]:
+    """(parameters, ground-truth program) of an instance, with some parameters changed."""
+    values = params(slug, seed, **changes)
+    return values, program_for(slug, values, seed)
+
+
+def perturb(program: str, old: str, new: str) -> str:
+    """Replace a text that must occur exactly once (a deliberately wrong ground truth)."""
+    assert program.count(old) == 1, old
+    return program.replace(old, new)
+
+
+def retime(program: str, *, refine: int = 1, spectral_radius: float | None = None, end_time: float | None = None,
+           extra: str = "") -> str:
+    """More steps, a longer time at the same step size, a non-dissipative integrator, extra settings."""
+    key_steps = "simulationSettings.timeIntegration.numberOfSteps = "
+    key_end = "simulationSettings.timeIntegration.endTime = "
+    start = program.index(key_steps) + len(key_steps)
+    stop = program.index("\n", start)
+    steps = int(program[start:stop])
+    t_start = program.index(key_end) + len(key_end)
+    t_stop = program.index("\n", t_start)
+    old_end = float(program[t_start:t_stop])
+    new_end = old_end if end_time is None else end_time
+    if refine != 1 or end_time is not None:
+        program = program[:start] + str(round(steps * refine * new_end / old_end)) + program[stop:]
+        t_start = program.index(key_end) + len(key_end)
+        t_stop = program.index("\n", t_start)
+        program = program[:t_start] + repr(new_end) + program[t_stop:]
+    lines = [extra] if extra else []
+    if spectral_radius is not None:
+        lines.append(f"simulationSettings.timeIntegration.generalizedAlpha.spectralRadius = {spectral_radius}")
+    return program.replace(SOLVE, "\n".join([*lines, SOLVE])) if lines else program
+
+
+def stored_sensor(mbs, sensor, times: np.ndarray) -> np.ndarray:
+    """A sensor's stored values, one row per recorded step (time column dropped)."""
+    data = np.asarray(mbs.GetSensorStoredData(sensor))
+    _, first = np.unique(data[:, 0], return_index=True)
+    data = data[np.sort(first)]
+    assert len(data) == len(times) and np.allclose(data[:, 0], times)
+    return data[:, 1:]
 
 
 def simulate(program: str) -> tuple[np.ndarray, np.ndarray, object]:
@@ -73,11 +131,7 @@ def simulate_bodies(program: str, mass_points: bool = False) -> tuple[np.ndarray
     for _obj, body_sensors in sorted(mbs.variables["_bodySensors"].items()):
         data = {}
         for name, sensor in body_sensors.items():
-            stored = np.asarray(mbs.GetSensorStoredData(sensor))
-            _, first = np.unique(stored[:, 0], return_index=True)
-            stored = stored[np.sort(first)]
-            assert len(stored) == len(times) and np.allclose(stored[:, 0], times)
-            values = stored[:, 1:]
+            values = stored_sensor(mbs, sensor, times)
             data[name] = values.reshape(-1, 3, 3) if name == "RotationMatrix" else values
         bodies.append(data)
     return times, q, bodies
@@ -95,3 +149,8 @@ def kinetic_energy(body: dict[str, np.ndarray], m: float, j_local: np.ndarray) -
     v, w, rot = body["Velocity"], body["AngularVelocity"], body["RotationMatrix"]
     j_global = rot @ j_local @ np.transpose(rot, (0, 2, 1))
     return 0.5 * m * np.sum(v * v, axis=1) + 0.5 * np.einsum("ni,nij,nj->n", w, j_global, w)
+
+
+def planar_angle(q: np.ndarray, i0: int, axis: int) -> np.ndarray:
+    """Unwrapped rotation angle about a fixed global axis (1, 2, 3 = x, y, z) from Euler parameters."""
+    return np.unwrap(2 * np.arctan2(q[:, i0 + 3 + axis], q[:, i0 + 3]))

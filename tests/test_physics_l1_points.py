@@ -14,17 +14,9 @@ Velocities come from node sensors (written every step), accelerations from secon
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from simulate import SOLVE, simulate
-
-from meceng.tasks.registry import default_registry
+from simulate import SOLVE, perturb, reference, retime, simulate, stored_sensor
 
 SEEDS = (0, 1, 2)
 
@@ -45,30 +37,10 @@ mbs.variables['_force'] = _force
 """
 
 
-def _model(slug: str):
-    return default_registry().get(slug)
-
-
-def _program(slug: str, seed: int, **overrides) -> tuple[dict, str]:
-    model = _model(slug)
-    values = dict(model.sample_params(seed))
-    values.update(overrides)
-    return values, model.reference_program(values, "", seed)
-
-
-def _perturb(program: str, old: str, new: str) -> str:
-    assert program.count(old) == 1, old
-    return program.replace(old, new)
-
-
 def _run(program: str, *, refine: int = 1, conservative: bool = False):
     """Simulate with more steps and/or without numerical damping; returns
     (t, positions (n, 3N), velocities (n, 3N), connector forces (n, k), mbs)."""
-    if refine != 1:
-        key = "simulationSettings.timeIntegration.numberOfSteps = "
-        start = program.index(key) + len(key)
-        end = program.index("\n", start)
-        program = program[:start] + str(int(program[start:end]) * refine) + program[end:]
+    program = retime(program, refine=refine)
     extra = ["simulationSettings.solution.sensors.writePeriod = 0"]
     if conservative:
         extra.append("simulationSettings.timeIntegration.generalizedAlpha.spectralRadius = 1")
@@ -78,11 +50,7 @@ def _run(program: str, *, refine: int = 1, conservative: bool = False):
     t, q, mbs = simulate(program)
 
     def stored(sensor):
-        data = np.asarray(mbs.GetSensorStoredData(sensor))
-        _, first = np.unique(data[:, 0], return_index=True)
-        data = data[np.sort(first)]
-        assert len(data) == len(t) and np.allclose(data[:, 0], t)
-        return data[:, 1:]
+        return stored_sensor(mbs, sensor, t)
 
     vel = np.hstack([stored(s) for s in mbs.variables["_vel"]])
     forces = [stored(s)[:, 0] for s in mbs.variables["_force"]]
@@ -177,7 +145,7 @@ def _slider_crank_errors(v: dict, program: str) -> tuple[float, float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_slider_crank_point_masses(seed):
-    v, program = _program("slider_crank_point_masses", seed)
+    v, program = reference("slider_crank_point_masses", seed)
     constraint, angle_err, energy_err = _slider_crank_errors(v, program)
     assert constraint < 1e-9
     assert angle_err < 2e-5
@@ -186,23 +154,23 @@ def test_slider_crank_point_masses(seed):
 
 def test_slider_crank_point_masses_swings_to_minus_theta0():
     """The force drives the crank through theta = 0 to -theta0 (energy conservation)."""
-    v, program = _program("slider_crank_point_masses", 4)
+    v, program = reference("slider_crank_point_masses", 4)
     _, q, _, _, _ = _run(program)
     theta = np.arctan2(q[:, 1], q[:, 0])
     assert theta.min() == pytest.approx(-np.radians(v["crank_angle_deg"]), abs=2e-3)
 
 
 def test_slider_crank_point_masses_detects_wrong_parameters():
-    v, program = _program("slider_crank_point_masses", 1)
+    v, program = reference("slider_crank_point_masses", 1)
     for old, new in [
         ("mass=mass_crank", "mass=1.05 * mass_crank"),
         ("mass=mass_slider", "mass=1.05 * mass_slider"),
         ("loadVector=[force, 0, 0]", "loadVector=[1.05 * force, 0, 0]"),
     ]:
-        _, angle_err, energy_err = _slider_crank_errors(v, _perturb(program, old, new))
+        _, angle_err, energy_err = _slider_crank_errors(v, perturb(program, old, new))
         assert angle_err > 1e-2, old
         assert energy_err > 1e-2, old
-    bad = _perturb(program, "distance=rod_length", "distance=1.01 * rod_length")
+    bad = perturb(program, "distance=rod_length", "distance=1.01 * rod_length")
     assert _slider_crank_errors(v, bad)[0] > 1e-3
 
 
@@ -226,22 +194,22 @@ def _elastic_pendulum_errors(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_pendulum_with_elastic_string_energy(seed):
-    v, program = _program("pendulum_with_elastic_string", seed)
+    v, program = reference("pendulum_with_elastic_string", seed)
     start_err, energy_err = _elastic_pendulum_errors(v, program)
     assert start_err < 1e-12
     assert energy_err < 2e-5
 
 
 def test_pendulum_with_elastic_string_detects_wrong_parameters():
-    v, program = _program("pendulum_with_elastic_string", 0, damping=2.0)
+    v, program = reference("pendulum_with_elastic_string", 0, damping=2.0)
     for old, new in [
         ("mass=mass,", "mass=1.05 * mass,"),
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
         ("damping=damping", "damping=1.05 * damping"),
         ("gravity=[0, -gravity, 0]", "gravity=[0, -1.05 * gravity, 0]"),
     ]:
-        assert _elastic_pendulum_errors(v, _perturb(program, old, new))[1] > 1e-4, old
-    bad = _perturb(program, "initialVelocity=[vx, vy, 0]", "initialVelocity=[vx, 1.05 * vy, 0]")
+        assert _elastic_pendulum_errors(v, perturb(program, old, new))[1] > 1e-4, old
+    bad = perturb(program, "initialVelocity=[vx, vy, 0]", "initialVelocity=[vx, 1.05 * vy, 0]")
     assert _elastic_pendulum_errors(v, bad)[0] > 1e-3
 
 
@@ -260,14 +228,14 @@ def _double_elastic_errors(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_double_pendulum_elastic_spring_energy(seed):
-    v, program = _program("double_pendulum_elastic_spring", seed)
+    v, program = reference("double_pendulum_elastic_spring", seed)
     start_err, energy_err = _double_elastic_errors(v, program)
     assert start_err < 1e-12
     assert energy_err < 2e-5
 
 
 def test_double_pendulum_elastic_spring_detects_wrong_parameters():
-    v, program = _program("double_pendulum_elastic_spring", 2, damping=2.0)
+    v, program = reference("double_pendulum_elastic_spring", 2, damping=2.0)
     for old, new in [
         ("mass=mass1", "mass=1.05 * mass1"),
         ("mass=mass2", "mass=1.05 * mass2"),
@@ -276,8 +244,8 @@ def test_double_pendulum_elastic_spring_detects_wrong_parameters():
         ("stiffness=stiffness2, damping=damping", "stiffness=stiffness2, damping=1.05 * damping"),
         ("mass=mass1, gravity=[0, -gravity, 0]", "mass=mass1, gravity=[0, -1.05 * gravity, 0]"),
     ]:
-        assert _double_elastic_errors(v, _perturb(program, old, new))[1] > 1e-4, old
-    bad = _perturb(program, "phi2 = angle2_deg", "phi2 = 1.01 * angle2_deg")
+        assert _double_elastic_errors(v, perturb(program, old, new))[1] > 1e-4, old
+    bad = perturb(program, "phi2 = angle2_deg", "phi2 = 1.01 * angle2_deg")
     assert _double_elastic_errors(v, bad)[0] > 1e-4
 
 
@@ -296,21 +264,21 @@ def _n_elastic_errors(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_n_pendulum_elastic_spring_energy(seed):
-    v, program = _program("n_pendulum_elastic_spring", seed)
+    v, program = reference("n_pendulum_elastic_spring", seed)
     start_err, energy_err = _n_elastic_errors(v, program)
     assert start_err < 1e-12
     assert energy_err < 2e-5
 
 
 def test_n_pendulum_elastic_spring_detects_wrong_parameters():
-    v, program = _program("n_pendulum_elastic_spring", 0, damping=5.0)
+    v, program = reference("n_pendulum_elastic_spring", 0, damping=5.0)
     for old, new in [
         ("mass=mass,", "mass=1.05 * mass,"),
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
         ("damping=damping", "damping=1.05 * damping"),
         ("gravity=[0, -gravity, 0]", "gravity=[0, -1.05 * gravity, 0]"),
     ]:
-        assert _n_elastic_errors(v, _perturb(program, old, new))[1] > 1e-4, old
+        assert _n_elastic_errors(v, perturb(program, old, new))[1] > 1e-4, old
 
 
 # ---------------------------------------------------------------------------------------------
@@ -335,12 +303,12 @@ def _forced_oscillator_error(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_mass_oscillator_with_user_function(seed):
-    v, program = _program("mass_oscillator_with_user_function", seed)
+    v, program = reference("mass_oscillator_with_user_function", seed)
     assert _forced_oscillator_error(v, program) < 1e-4
 
 
 def test_mass_oscillator_with_user_function_detects_wrong_parameters():
-    v, program = _program("mass_oscillator_with_user_function", 0)
+    v, program = reference("mass_oscillator_with_user_function", 0)
     for old, new in [
         ("mass=mass)", "mass=1.05 * mass)"),
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
@@ -349,7 +317,7 @@ def test_mass_oscillator_with_user_function_detects_wrong_parameters():
         ("np.sin(omega * t)", "np.sin(1.05 * omega * t)"),
         ("np.sin(omega * t)", "np.cos(omega * t)"),
     ]:
-        assert _forced_oscillator_error(v, _perturb(program, old, new)) > 1e-2, new
+        assert _forced_oscillator_error(v, perturb(program, old, new)) > 1e-2, new
 
 
 # ---------------------------------------------------------------------------------------------
@@ -386,27 +354,27 @@ def _n_oscillator_errors(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_n_mass_oscillator_damped(seed):
-    v, program = _program("n_mass_oscillator", seed)
+    v, program = reference("n_mass_oscillator", seed)
     assert _n_oscillator_errors(v, program)[0] < 2e-4
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_n_mass_oscillator_undamped_energy(seed):
-    v, program = _program("n_mass_oscillator", seed, damping=0.0)
+    v, program = reference("n_mass_oscillator", seed, damping=0.0)
     traj_err, energy_err = _n_oscillator_errors(v, program)
     assert traj_err < 2e-4
     assert energy_err < 1e-10
 
 
 def test_n_mass_oscillator_detects_wrong_parameters():
-    v, program = _program("n_mass_oscillator", 0, damping=5.0)
+    v, program = reference("n_mass_oscillator", 0, damping=5.0)
     for old, new in [
         ("mass=mass)", "mass=1.05 * mass)"),
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
         ("damping=damping", "damping=1.05 * damping"),
         ("loadVector=[force, 0, 0]", "loadVector=[1.05 * force, 0, 0]"),
     ]:
-        assert _n_oscillator_errors(v, _perturb(program, old, new))[0] > 2e-3, old
+        assert _n_oscillator_errors(v, perturb(program, old, new))[0] > 2e-3, old
 
 
 # ---------------------------------------------------------------------------------------------
@@ -449,7 +417,7 @@ def _linear_modes(v: dict, t: np.ndarray) -> np.ndarray:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_n_pendulum_energy_constraints_support_force(seed):
-    v, program = _program("n_pendulum", seed)
+    v, program = reference("n_pendulum", seed)
     start_err, constraint_err, energy_err, balance_err = _n_pendulum_errors(v, program)
     assert start_err < 1e-12
     assert constraint_err < 1e-9
@@ -459,7 +427,7 @@ def test_n_pendulum_energy_constraints_support_force(seed):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_n_pendulum_small_angle_normal_modes(seed):
-    v, program = _program("n_pendulum", seed, angle_deg=0.5)
+    v, program = reference("n_pendulum", seed, angle_deg=0.5)
     t, q, _, _, _ = _run(program, refine=5)
     n = v["n_masses"]
     pos = np.concatenate([np.zeros((len(t), 1, 3)), q.reshape(len(t), n, 3)], axis=1)
@@ -470,16 +438,16 @@ def test_n_pendulum_small_angle_normal_modes(seed):
 
 
 def test_n_pendulum_detects_wrong_parameters():
-    v, program = _program("n_pendulum", 1)
-    bad_mass = _perturb(program, "mass=mass,", "mass=1.05 * mass,")
+    v, program = reference("n_pendulum", 1)
+    bad_mass = perturb(program, "mass=mass,", "mass=1.05 * mass,")
     assert _n_pendulum_errors(v, bad_mass)[3] > 2e-2
-    bad_gravity = _perturb(program, "gravity=[0, -gravity, 0]", "gravity=[0, -1.05 * gravity, 0]")
+    bad_gravity = perturb(program, "gravity=[0, -gravity, 0]", "gravity=[0, -1.05 * gravity, 0]")
     assert _n_pendulum_errors(v, bad_gravity)[2] > 1e-2
-    bad_length = _perturb(program, "phi0 = angle_deg", "length = 1.01 * length\nphi0 = angle_deg")
+    bad_length = perturb(program, "phi0 = angle_deg", "length = 1.01 * length\nphi0 = angle_deg")
     start_err, constraint_err, _, _ = _n_pendulum_errors(v, bad_length)
     assert start_err > 1e-3
     assert constraint_err > 1e-3
-    bad_angle = _perturb(program, "phi0 = angle_deg", "phi0 = 1.05 * angle_deg")
+    bad_angle = perturb(program, "phi0 = angle_deg", "phi0 = 1.05 * angle_deg")
     assert _n_pendulum_errors(v, bad_angle)[0] > 1e-4
 
 
@@ -515,7 +483,7 @@ def _string_errors(v: dict, program: str, elastic: bool) -> tuple[float, float, 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_mass_point_on_rigid_string(seed):
-    v, program = _program("mass_point_on_rigid_string", seed)
+    v, program = reference("mass_point_on_rigid_string", seed)
     start_err, momentum_err, energy_err, string_err = _string_errors(v, program, elastic=False)
     assert start_err < 1e-12
     assert momentum_err < 2e-5
@@ -524,20 +492,20 @@ def test_mass_point_on_rigid_string(seed):
 
 
 def test_mass_point_on_rigid_string_detects_wrong_parameters():
-    v, program = _program("mass_point_on_rigid_string", 0)
-    bad_mass = _perturb(program, "mass=mass,", "mass=1.05 * mass,")
+    v, program = reference("mass_point_on_rigid_string", 0)
+    bad_mass = perturb(program, "mass=mass,", "mass=1.05 * mass,")
     assert _string_errors(v, bad_mass, elastic=False)[3] > 2e-2
-    bad_gravity = _perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.05 * gravity]")
+    bad_gravity = perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.05 * gravity]")
     assert _string_errors(v, bad_gravity, elastic=False)[2] > 1e-2
-    bad_length = _perturb(program, "distance=length", "distance=1.01 * length")
+    bad_length = perturb(program, "distance=length", "distance=1.01 * length")
     assert _string_errors(v, bad_length, elastic=False)[3] > 5e-3
-    bad_velocity = _perturb(program, "initialVelocity=[0, vy, vz]", "initialVelocity=[0, vy, 1.05 * vz]")
+    bad_velocity = perturb(program, "initialVelocity=[0, vy, vz]", "initialVelocity=[0, vy, 1.05 * vz]")
     assert _string_errors(v, bad_velocity, elastic=False)[0] > 1e-3
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_mass_point_on_elastic_string(seed):
-    v, program = _program("mass_point_on_elastic_string", seed)
+    v, program = reference("mass_point_on_elastic_string", seed)
     start_err, momentum_err, energy_err, _ = _string_errors(v, program, elastic=True)
     assert start_err < 1e-12
     assert momentum_err < 2e-5
@@ -545,14 +513,14 @@ def test_mass_point_on_elastic_string(seed):
 
 
 def test_mass_point_on_elastic_string_detects_wrong_parameters():
-    v, program = _program("mass_point_on_elastic_string", 1, damping=10.0)
+    v, program = reference("mass_point_on_elastic_string", 1, damping=10.0)
     for old, new in [
         ("mass=mass,", "mass=1.05 * mass,"),
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
         ("damping=damping", "damping=1.05 * damping"),
         ("gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.05 * gravity]"),
     ]:
-        assert _string_errors(v, _perturb(program, old, new), elastic=True)[2] > 1e-4, old
+        assert _string_errors(v, perturb(program, old, new), elastic=True)[2] > 1e-4, old
 
 
 # ---------------------------------------------------------------------------------------------
@@ -583,24 +551,24 @@ def _two_springs_errors(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_two_mass_points_with_springs(seed):
-    v, program = _program("two_mass_points_with_springs", seed)
+    v, program = reference("two_mass_points_with_springs", seed)
     momentum_err, energy_err = _two_springs_errors(v, program)
     assert momentum_err < 2e-5
     assert energy_err < 2e-5
 
 
 def test_two_mass_points_with_springs_detects_wrong_parameters():
-    v, program = _program("two_mass_points_with_springs", 0, damping=5.0)
+    v, program = reference("two_mass_points_with_springs", 0, damping=5.0)
     for old, new in [
         ("mass=mass1", "mass=1.05 * mass1"),
         ("initialVelocity=[0, -velocity2, 0]", "initialVelocity=[0, -1.05 * velocity2, 0]"),
     ]:
-        assert _two_springs_errors(v, _perturb(program, old, new))[0] > 1e-2, old
+        assert _two_springs_errors(v, perturb(program, old, new))[0] > 1e-2, old
     for old, new in [
         ("stiffness=stiffness", "stiffness=1.05 * stiffness"),
         ("damping=damping", "damping=1.05 * damping"),
     ]:
-        assert _two_springs_errors(v, _perturb(program, old, new))[1] > 1e-4, old
+        assert _two_springs_errors(v, perturb(program, old, new))[1] > 1e-4, old
 
 
 def _dumbbell_errors(v: dict, program: str) -> tuple[float, float, float]:
@@ -621,7 +589,7 @@ def _dumbbell_errors(v: dict, program: str) -> tuple[float, float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_two_mass_points_with_distances_closed_form(seed):
-    v, program = _program("two_mass_points_with_distances", seed)
+    v, program = reference("two_mass_points_with_distances", seed)
     pos_err, force_err, momentum_err = _dumbbell_errors(v, program)
     assert pos_err < 5e-5
     assert force_err < 1e-4
@@ -629,12 +597,12 @@ def test_two_mass_points_with_distances_closed_form(seed):
 
 
 def test_two_mass_points_with_distances_detects_wrong_parameters():
-    v, program = _program("two_mass_points_with_distances", 0)
+    v, program = reference("two_mass_points_with_distances", 0)
     for old, new in [
         ("mass=mass1", "mass=1.05 * mass1"),
         ("mass=mass2", "mass=1.05 * mass2"),
         ("initialVelocity=[0, velocity1, 0]", "initialVelocity=[0, 1.05 * velocity1, 0]"),
         ("distance=2 * half_distance", "distance=2.02 * half_distance"),
     ]:
-        pos_err, force_err, _ = _dumbbell_errors(v, _perturb(program, old, new))
+        pos_err, force_err, _ = _dumbbell_errors(v, perturb(program, old, new))
         assert max(pos_err, force_err) > 1e-2, old

@@ -15,18 +15,11 @@ off and require a value > 3, so the tolerances are meaningful.
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Callable
-from pathlib import Path
 
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from simulate import SOLVE, cuboid, kinetic_energy, simulate, simulate_bodies
-
-from meceng.tasks.registry import default_registry
+from simulate import cuboid, kinetic_energy, params, planar_angle, program_for, retime, simulate, simulate_bodies
 
 SEEDS = (0, 1, 2)
 
@@ -34,34 +27,11 @@ SEEDS = (0, 1, 2)
 # ---------------------------------------------------------------------------------------- helpers
 
 
-def _model(slug: str):
-    return default_registry().get(slug)
-
-
-def _values(slug: str, seed: int, **changes) -> dict:
-    values = dict(_model(slug).sample_params(seed))
-    values.update(changes)
-    return values
-
-
 def _program(slug: str, values: dict, *, refine: int = 1, spectral_radius: float | None = None) -> str:
     """The reference program for ``values``, optionally with more steps / no numerical damping."""
-    model = _model(slug)
-    program = model.reference_program(values, "", 0)
-    if refine != 1:
-        steps = model.sim.steps
-        old = f"numberOfSteps = {steps}\n"
-        assert program.count(old) == 1
-        program = program.replace(old, f"numberOfSteps = {steps * refine}\n")
-    if spectral_radius is not None:
-        key = "simulationSettings.timeIntegration.generalizedAlpha.spectralRadius"
-        program = program.replace(SOLVE, f"{key} = {spectral_radius}\n{SOLVE}")
-    return program
+    return retime(program_for(slug, values), refine=refine, spectral_radius=spectral_radius)
 
 
-def _planar_angle(q: np.ndarray, i0: int, axis: int) -> np.ndarray:
-    """Unwrapped rotation angle about a fixed global axis (1, 2, 3 = x, y, z) from Euler parameters."""
-    return np.unwrap(2 * np.arctan2(q[:, i0 + 3 + axis], q[:, i0 + 3]))
 
 
 def rk4(rhs: Callable[[list], list], y0, t_end: float, h: float, every: int) -> np.ndarray:
@@ -94,7 +64,7 @@ def check_spinning_disc(v: dict, program: str) -> float:
     1e-4), and of the fitted angular acceleration against T/J (1e-3); the centre stays fixed."""
     t, q, _ = simulate(program)
     j = 0.5 * v["mass"] * v["radius"] ** 2
-    angle = _planar_angle(q, 0, 3)
+    angle = planar_angle(q, 0, 3)
     exact = v["omega0"] * t + v["torque"] * t**2 / (2 * j)
     err_angle = np.max(np.abs(angle - exact)) / exact[-1]
     alpha = 2 * np.polyfit(t, angle, 2)[0]
@@ -105,7 +75,7 @@ def check_spinning_disc(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_spinning_disc(seed):
-    v = _values("spinning_disc", seed)
+    v = params("spinning_disc", seed)
     # the Euler-parameter integration has a relative spin-rate error ~ (omega*h)^2; refine 4x
     assert check_spinning_disc(v, _program("spinning_disc", v, refine=4)) < 1
 
@@ -128,7 +98,7 @@ def check_torsional_oscillator(v: dict, program: str) -> float:
     """Max error of the rotation angle against the closed form, relative to its amplitude
     (tolerance 1e-3: the integrator's phase error over up to 40 periods at 8x refined steps)."""
     t, q, _ = simulate(program)
-    angle = _planar_angle(q, 0, 3)
+    angle = planar_angle(q, 0, 3)
     exact = torsional_exact(v, t)
     assert np.max(np.abs(q[:, :3])) < 1e-10
     return float(np.max(np.abs(angle - exact)) / np.max(np.abs(exact)) / 1e-3)
@@ -136,7 +106,7 @@ def check_torsional_oscillator(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_torsional_oscillator(seed):
-    v = _values("torsional_oscillator", seed)
+    v = params("torsional_oscillator", seed)
     # period elongation of the integrator ~ (omega*h)^2/12: refine 8x for omega up to 120 rad/s
     assert check_torsional_oscillator(v, _program("torsional_oscillator", v, refine=8)) < 1
 
@@ -171,7 +141,7 @@ def check_spring_coupled(v: dict, program: str) -> dict[str, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_spring_coupled_flying_rigid_bodies(seed):
-    v = _values("spring_coupled_flying_rigid_bodies", seed, damping=0.0)
+    v = params("spring_coupled_flying_rigid_bodies", seed, damping=0.0)
     errors = check_spring_coupled(v, _program("spring_coupled_flying_rigid_bodies", v, refine=2,
                                               spectral_radius=1.0))
     assert errors["com"] < 1e-12
@@ -183,7 +153,7 @@ def test_spring_coupled_flying_rigid_bodies(seed):
 def test_spring_coupled_flying_rigid_bodies_damped(seed):
     """With damping, momentum is still conserved and the energy only decreases."""
     slug = "spring_coupled_flying_rigid_bodies"
-    v = _values(slug, seed, damping=20.0)
+    v = params(slug, seed, damping=20.0)
     errors = check_spring_coupled(v, _program(slug, v))
     assert errors["com"] < 1e-12
     assert errors["energy"] > 1e-2  # dissipated
@@ -228,7 +198,7 @@ def check_inverted_pendulum(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_inverted_single_pendulum(seed):
-    v = _values("inverted_single_pendulum", seed)
+    v = params("inverted_single_pendulum", seed)
     assert check_inverted_pendulum(v, _program("inverted_single_pendulum", v, refine=4)) < 1
 
 
@@ -272,7 +242,7 @@ def check_link_on_two_prismatic_joints(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_link_on_two_prismatic_joints(seed):
-    v = _values("link_on_two_prismatic_joints", seed)
+    v = params("link_on_two_prismatic_joints", seed)
     program = _program("link_on_two_prismatic_joints", v, refine=4)
     assert check_link_on_two_prismatic_joints(v, program) < 1
 
@@ -313,13 +283,13 @@ def check_suspended_energy(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_suspended_rigid_body_vertical(seed):
-    v = _values("suspended_rigid_body", seed, vel_x=0.0, vel_z=0.0)
+    v = params("suspended_rigid_body", seed, vel_x=0.0, vel_z=0.0)
     assert check_suspended_vertical(v, _program("suspended_rigid_body", v, refine=4)) < 1
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_suspended_rigid_body_energy(seed):
-    v = _values("suspended_rigid_body", seed, damping=0.0)
+    v = params("suspended_rigid_body", seed, damping=0.0)
     program = _program("suspended_rigid_body", v, refine=2, spectral_radius=1.0)
     assert check_suspended_energy(v, program) < 1
 
@@ -367,7 +337,7 @@ def check_gyroscope(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS[:2])
 def test_gyroscope_on_spherical_joint(seed):
-    v = _values("gyroscope_on_spherical_joint", seed)
+    v = params("gyroscope_on_spherical_joint", seed)
     assert check_gyroscope(v, _program("gyroscope_on_spherical_joint", v, refine=4)) < 1
 
 
@@ -376,7 +346,7 @@ def test_gyroscope_precession_and_invariants(seed):
     """Mean precession rate ~ m*g*a/(J3*omega) (fast top); energy, vertical angular momentum and
     spin about the disc axis are conserved."""
     slug = "gyroscope_on_spherical_joint"
-    v = _values(slug, seed)
+    v = params(slug, seed)
     m, r, w, a, g = v["mass"], v["radius"], v["width"], v["offset"], v["gravity"]
     j_axis = 0.5 * m * r * r
     j_c = np.diag([j_axis, m * (r * r / 4 + w * w / 12), m * (r * r / 4 + w * w / 12)])
@@ -408,7 +378,7 @@ def check_prismatic(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_prismatic_joint_system(seed):
-    v = _values("prismatic_joint_system", seed)
+    v = params("prismatic_joint_system", seed)
     assert check_prismatic(v, _program("prismatic_joint_system", v)) < 1
 
 
@@ -447,7 +417,7 @@ def check_double_pendulum_rigid(v: dict, program: str) -> float:
     stride = (len(t) - 1) // 200
     t, q = t[::stride], q[::stride]
     ref = double_pendulum_reference(v, t[-1], t[1] - t[0])
-    b1, b2 = _planar_angle(q, 0, 3), _planar_angle(q, 7, 3)
+    b1, b2 = planar_angle(q, 0, 3), planar_angle(q, 7, 3)
     l1, l2 = v["length1"], v["length2"]
     e1 = np.column_stack([np.cos(b1), np.sin(b1), 0 * b1])
     e2 = np.column_stack([np.cos(b2), np.sin(b2), 0 * b2])
@@ -458,7 +428,7 @@ def check_double_pendulum_rigid(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_double_pendulum_rigid_bodies(seed):
-    v = _values("double_pendulum_rigid_bodies", seed)
+    v = params("double_pendulum_rigid_bodies", seed)
     assert check_double_pendulum_rigid(v, _program("double_pendulum_rigid_bodies", v, refine=4)) < 1
 
 
@@ -488,7 +458,7 @@ DETECTS = [
 @pytest.mark.parametrize(("slug", "check", "refine", "rho", "overrides", "name"), DETECTS,
                          ids=[f"{d[0]}-{d[-1]}" for d in DETECTS])
 def test_check_detects_wrong_parameter(slug, check, refine, rho, overrides, name):
-    v = _values(slug, 5, **overrides)
+    v = params(slug, 5, **overrides)
     program = _program(slug, dict(v, **{name: 1.05 * v[name]}), refine=refine, spectral_radius=rho)
     assert check(v, program) > 3
 
@@ -496,6 +466,6 @@ def test_check_detects_wrong_parameter(slug, check, refine, rho, overrides, name
 @pytest.mark.parametrize("name", ["stiffness", "density"])
 def test_spring_coupled_detects_wrong_parameter(name):
     slug = "spring_coupled_flying_rigid_bodies"
-    v = _values(slug, 5, damping=0.0)
+    v = params(slug, 5, damping=0.0)
     program = _program(slug, dict(v, **{name: 1.05 * v[name]}), refine=2, spectral_radius=1.0)
     assert check_spring_coupled(v, program)["energy"] > 3 * 2e-4

@@ -17,30 +17,18 @@ from __future__ import annotations
 
 import itertools
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from simulate import SOLVE, simulate, simulate_bodies
-
-from meceng.tasks.registry import default_registry
+from simulate import reference, retime, simulate, simulate_bodies
 
 SEEDS = (0, 1, 2)
 
 #: Added before ``mbs.Assemble()``: position, velocity (and for rigid bodies angular velocity and
 #: rotation matrix) sensors for every body, in creation order, recorded at every step.
 def _program(slug: str, seed: int, *, extra: str = "", **overrides) -> tuple[dict, str]:
-    model = default_registry().get(slug)
-    values = dict(model.sample_params(seed))
-    values.update(overrides)
-    program = model.reference_program(values, "", seed)
-    if extra:
-        program = program.replace(SOLVE, f"{extra}\n{SOLVE}")
-    return values, program
+    values, program = reference(slug, seed, **overrides)
+    return values, retime(program, extra=extra)
 
 
 def _bodies(program: str) -> tuple[np.ndarray, np.ndarray, list[dict[str, np.ndarray]]]:
@@ -373,9 +361,7 @@ def test_disc_rolls_straight_without_slipping(seed):
 def _refined(program: str, factor: int = 4) -> str:
     """More steps: the Euler-parameter integration of the fast wheel spin has a relative error of
     about (omega*h)^2; refine to test the model, not the integrator."""
-    key = "numberOfSteps = 2000"
-    assert program.count(key) == 1
-    return program.replace(key, f"numberOfSteps = {2000 * factor}")
+    return retime(program, refine=factor)
 
 
 def _vehicle_check(p: dict, bodies: list[dict], t: np.ndarray, body_mass: float, n_driven: int) -> None:

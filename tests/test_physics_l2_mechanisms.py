@@ -12,57 +12,15 @@ the reference program by 5 %.
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import root
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from simulate import SOLVE, simulate
+from simulate import SOLVE, perturb, reference, retime, simulate
 from simulate import simulate_bodies as shared_simulate_bodies
-
-from meceng.tasks.registry import default_registry
 
 SEEDS = (0, 1, 2, 3)
 GRAVITY_ROBOTS = 9.81  # fixed in the robot descriptions
-
-
-def _program(slug: str, seed: int, **overrides) -> tuple[dict, str]:
-    model = default_registry().get(slug)
-    values = dict(model.sample_params(seed))
-    values.update(overrides)
-    return values, model.reference_program(values, "", seed)
-
-
-def _settings(program: str, *, refine: int = 1, spectral_radius: float | None = None,
-              end_time: float | None = None) -> str:
-    """More steps, a longer time (same step size) and/or a non-dissipative integrator."""
-    key_steps = "simulationSettings.timeIntegration.numberOfSteps = "
-    key_end = "simulationSettings.timeIntegration.endTime = "
-    start = program.index(key_steps) + len(key_steps)
-    stop = program.index("\n", start)
-    steps = int(program[start:stop])
-    t_start = program.index(key_end) + len(key_end)
-    t_stop = program.index("\n", t_start)
-    old_end = float(program[t_start:t_stop])
-    new_end = old_end if end_time is None else end_time
-    steps = round(steps * refine * new_end / old_end)
-    program = program[:start] + str(steps) + program[stop:]
-    program = program[:t_start] + repr(new_end) + program[t_stop:]
-    if spectral_radius is not None:
-        program = program.replace(
-            SOLVE, f"simulationSettings.timeIntegration.generalizedAlpha.spectralRadius = {spectral_radius}\n{SOLVE}"
-        )
-    return program
-
-
-def _perturb(program: str, old: str, new: str) -> str:
-    assert program.count(old) == 1, old
-    return program.replace(old, new)
 
 
 def simulate_qv(program: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -166,7 +124,7 @@ def _fourbar_residual(p: dict, t: np.ndarray, theta: np.ndarray, eps: float = 1e
 
 def _fourbar_point_errors(p: dict, program: str) -> tuple[float, float]:
     """(equation-of-motion residual, largest violation of the rod lengths and of z = 0)."""
-    t, q, _ = simulate(_settings(program, refine=4))
+    t, q, _ = simulate(retime(program, refine=4))
     pB, pC = q[:, 0:3], q[:, 3:6]
     pD = np.array([p["ground_length"], 0, 0])
     theta = np.unwrap(np.arctan2(pB[:, 1], pB[:, 0]))
@@ -180,26 +138,26 @@ def _fourbar_point_errors(p: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_four_bar_point_masses_equation_of_motion(seed):
-    p, program = _program("four_bar_mechanism_point_masses", seed)
+    p, program = reference("four_bar_mechanism_point_masses", seed)
     residual, constraint = _fourbar_point_errors(p, program)
     assert residual < 1e-3
     assert constraint < 1e-8
 
 
 def test_four_bar_point_masses_detects_wrong_parameters():
-    p, program = _program("four_bar_mechanism_point_masses", 0)
-    assert _fourbar_point_errors(p, _perturb(program, "mass=mass_b,", "mass=1.05 * mass_b,"))[0] > 1e-2
-    assert _fourbar_point_errors(p, _perturb(program, "mass=mass_c,", "mass=1.05 * mass_c,"))[0] > 1e-2
-    bad_gravity = _perturb(program, "mass=mass_b, gravity=[0, -gravity, 0]",
+    p, program = reference("four_bar_mechanism_point_masses", 0)
+    assert _fourbar_point_errors(p, perturb(program, "mass=mass_b,", "mass=1.05 * mass_b,"))[0] > 1e-2
+    assert _fourbar_point_errors(p, perturb(program, "mass=mass_c,", "mass=1.05 * mass_c,"))[0] > 1e-2
+    bad_gravity = perturb(program, "mass=mass_b, gravity=[0, -gravity, 0]",
                            "mass=mass_b, gravity=[0, -1.05 * gravity, 0]")
     assert _fourbar_point_errors(p, bad_gravity)[0] > 1e-2
-    bad_length = _perturb(program, "distance=coupler_length", "distance=1.05 * coupler_length")
+    bad_length = perturb(program, "distance=coupler_length", "distance=1.05 * coupler_length")
     assert _fourbar_point_errors(p, bad_length)[1] > 1e-3
 
 
 def _fourbar_rigid_errors(p: dict, program: str) -> tuple[float, float]:
     """(equation-of-motion residual, largest mismatch of the joint points / planarity)."""
-    t, q, _ = simulate(_settings(program, refine=4))
+    t, q, _ = simulate(retime(program, refine=4))
     theta = _z_angle(q, 0)
     assert _same_angle(theta[0], np.radians(p["crank_angle_deg"]))
     b, c = p["coupler_length"], p["rocker_length"]
@@ -223,18 +181,18 @@ def _fourbar_rigid_errors(p: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_four_bar_rigid_bodies_equation_of_motion(seed):
-    p, program = _program("four_bar_mechanism_rigid_bodies", seed)
+    p, program = reference("four_bar_mechanism_rigid_bodies", seed)
     residual, kinematics = _fourbar_rigid_errors(p, program)
     assert residual < 1e-3
     assert kinematics < 1e-8
 
 
 def test_four_bar_rigid_bodies_detects_wrong_parameters():
-    p, program = _program("four_bar_mechanism_rigid_bodies", 0)
-    heavy_coupler = _perturb(program, "sideLengths=[coupler_length, width, width]",
+    p, program = reference("four_bar_mechanism_rigid_bodies", 0)
+    heavy_coupler = perturb(program, "sideLengths=[coupler_length, width, width]",
                              "sideLengths=[coupler_length, width, 1.05 * width]")
     assert _fourbar_rigid_errors(p, heavy_coupler)[0] > 2.5e-3
-    heavy_rocker = _perturb(program, "sideLengths=[rocker_length, width, width]",
+    heavy_rocker = perturb(program, "sideLengths=[rocker_length, width, width]",
                             "sideLengths=[rocker_length, width, 1.05 * width]")
     assert _fourbar_rigid_errors(p, heavy_rocker)[0] > 2.5e-3
     bad_gravity = program.replace("gravity=[0, -gravity, 0]", "gravity=[0, -1.05 * gravity, 0]")
@@ -370,7 +328,7 @@ def _energy_error(slug: str, p: dict, program: str) -> tuple[float, np.ndarray]:
     """Relative drift of kinetic + spring energy - work of the constant loads, undamped and without
     numerical damping (spectral radius 1); also returns the positions (steps, nodes, 3)."""
     nodes, fixed, springs, loads, masses, _ = _network(slug, p)
-    t, q, v = simulate_qv(_settings(program, spectral_radius=1.0))
+    t, q, v = simulate_qv(retime(program, spectral_radius=1.0))
     x = q.reshape(len(t), -1, 3)
     assert np.max(np.abs(x[:, :, 2])) == 0.0  # planar
     xy, vel = x[:, :, :2], v.reshape(len(t), -1, 3)
@@ -386,9 +344,9 @@ SPRING_NETWORKS = ("elastic_chain", "parallel_chord_truss_frame_with_springs", "
 @pytest.mark.parametrize("slug", SPRING_NETWORKS)
 @pytest.mark.parametrize("seed", SEEDS)
 def test_spring_network_energy_and_statics(slug, seed):
-    p, program = _program(slug, seed)
+    p, program = reference(slug, seed)
     assert _static_error(slug, p, program) < 1e-7
-    p, program = _program(slug, seed, damping=0.0)
+    p, program = reference(slug, seed, damping=0.0)
     error, x = _energy_error(slug, p, program)
     assert error < 3e-4
     if slug == "elastic_chain":  # symmetric about the middle of the span
@@ -401,7 +359,7 @@ def test_spring_network_energy_and_statics(slug, seed):
 
 @pytest.mark.parametrize("slug", SPRING_NETWORKS)
 def test_spring_network_detects_wrong_parameters(slug):
-    p, program = _program(slug, 1, damping=0.0)
+    p, program = reference(slug, 1, damping=0.0)
     bad_stiffness = program.replace("stiffness=stiffness", "stiffness=1.05 * stiffness")
     assert _static_error(slug, p, bad_stiffness) > 1e-2
     assert _energy_error(slug, p, bad_stiffness)[0] > 1e-3
@@ -418,7 +376,7 @@ def _rotor_error(p: dict, program: str) -> float:
     """Largest deviation of the rotation angle from the independent solution, relative to the final
     angle; asserts that the rotor axis stays fixed."""
     # the Euler-parameter integration has a relative error ~ (omega*h)^2; refine the step 4x
-    t, q, _ = simulate(_settings(program, refine=4))
+    t, q, _ = simulate(retime(program, refine=4))
     assert np.max(np.abs(q[:, :3])) < 1e-10 and np.max(np.abs(q[:, 5:7])) < 1e-10
     theta = np.unwrap(2 * np.arctan2(q[:, 4], q[:, 3]))
     r, mu = p["radius"], p["unbalance_mass"]
@@ -430,18 +388,18 @@ def _rotor_error(p: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_unbalanced_rotor_rotation(seed):
-    p, program = _program("rigid_rotor_unbalanced", seed)
+    p, program = reference("rigid_rotor_unbalanced", seed)
     assert _rotor_error(p, program) < 1e-5
 
 
 def test_unbalanced_rotor_detects_wrong_parameters():
-    p, program = _program("rigid_rotor_unbalanced", 2)
-    bad_unbalance = _perturb(program, "InertiaMassPoint(mass=unbalance_mass)",
+    p, program = reference("rigid_rotor_unbalanced", 2)
+    bad_unbalance = perturb(program, "InertiaMassPoint(mass=unbalance_mass)",
                              "InertiaMassPoint(mass=1.05 * unbalance_mass)")
     assert _rotor_error(p, bad_unbalance) > 1e-4
-    bad_radius = _perturb(program, "Translated([0, 0, radius])", "Translated([0, 0, 1.05 * radius])")
+    bad_radius = perturb(program, "Translated([0, 0, radius])", "Translated([0, 0, 1.05 * radius])")
     assert _rotor_error(p, bad_radius) > 1e-4
-    bad_inertia = _perturb(program, "length=length,", "length=1.05 * length,")
+    bad_inertia = perturb(program, "length=length,", "length=1.05 * length,")
     assert _rotor_error(p, bad_inertia) > 1e-3
 
 
@@ -452,7 +410,7 @@ def test_unbalanced_rotor_detects_wrong_parameters():
 def _gyroscope_errors(p: dict, program: str) -> tuple[float, float]:
     """(largest deviation of the axis inclination from the reduced equation, and of its largest
     value from the closed-form lower turning point), both relative to the nutation amplitude."""
-    t, q, _ = simulate(_settings(program, refine=2))
+    t, q, _ = simulate(retime(program, refine=2))
     radius, thickness, arm, g = p["disc_radius"], p["thickness"], p["axle_length"], p["gravity"]
     m = p["density"] * np.pi * radius**2 * thickness
     j3 = 0.5 * m * radius**2
@@ -482,19 +440,19 @@ def _gyroscope_errors(p: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS[:3])
 def test_gyroscope_nutation(seed):
-    p, program = _program("gyroscope_nutation", seed)
+    p, program = reference("gyroscope_nutation", seed)
     trajectory, turning = _gyroscope_errors(p, program)
     assert trajectory < 3e-4
     assert turning < 1e-4
 
 
 def test_gyroscope_detects_wrong_parameters():
-    p, program = _program("gyroscope_nutation", 1)
-    bad_disc = _perturb(program, "outerRadius=disc_radius", "outerRadius=1.05 * disc_radius")
+    p, program = reference("gyroscope_nutation", 1)
+    bad_disc = perturb(program, "outerRadius=disc_radius", "outerRadius=1.05 * disc_radius")
     assert max(_gyroscope_errors(p, bad_disc)) > 1e-2
-    bad_thickness = _perturb(program, "length=thickness", "length=1.05 * thickness")
+    bad_thickness = perturb(program, "length=thickness", "length=1.05 * thickness")
     assert _gyroscope_errors(p, bad_thickness)[0] > 1e-3
-    bad_gravity = _perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.05 * gravity]")
+    bad_gravity = perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.05 * gravity]")
     assert max(_gyroscope_errors(p, bad_gravity)) > 1e-2
 
 
@@ -511,7 +469,7 @@ def _cosine_trajectory(t, qs, qe, duration):
 def _scara_errors(p: dict, program: str, end_time: float | None = None) -> tuple[float, np.ndarray, float]:
     """(equation-of-motion residual relative to the largest joint torque, final joint angles,
     largest absolute link angle)."""
-    t, q, v = simulate_qv(_settings(program, end_time=end_time))
+    t, q, v = simulate_qv(retime(program, end_time=end_time))
 
     def angle_rate(i0):
         e0, e3, de0, de3 = q[:, i0 + 3], q[:, i0 + 6], v[:, i0 + 3], v[:, i0 + 6]
@@ -550,23 +508,23 @@ def _scara_errors(p: dict, program: str, end_time: float | None = None) -> tuple
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_scara_equations_of_motion(seed):
-    p, program = _program("2r_scara_robot", seed)
+    p, program = reference("2r_scara_robot", seed)
     residual, _, largest_angle = _scara_errors(p, program)
     assert residual < 5e-3
     assert largest_angle < np.radians(170)  # the Tait-Bryan z-angle in the controller never wraps
 
 
 def test_scara_settles_at_end_angles():
-    p, program = _program("2r_scara_robot", 3)
+    p, program = reference("2r_scara_robot", 3)
     _, final, _ = _scara_errors(p, program, end_time=4.0)
     assert np.max(np.abs(final - np.radians([p["q1_end_deg"], p["q2_end_deg"]]))) < 1e-8
 
 
 def test_scara_detects_wrong_parameters():
-    p, program = _program("2r_scara_robot", 0)
-    heavy_link2 = _perturb(program, "sideLengths=[length2, 0.04, 0.04]", "sideLengths=[length2, 0.04, 1.05 * 0.04]")
+    p, program = reference("2r_scara_robot", 0)
+    heavy_link2 = perturb(program, "sideLengths=[length2, 0.04, 0.04]", "sideLengths=[length2, 0.04, 1.05 * 0.04]")
     assert _scara_errors(p, heavy_link2)[0] > 2e-2
-    bad_gain = _perturb(program, "tau1 = kp * (q1d - phi1)", "tau1 = 1.05 * kp * (q1d - phi1)")
+    bad_gain = perturb(program, "tau1 = kp * (q1d - phi1)", "tau1 = 1.05 * kp * (q1d - phi1)")
     assert _scara_errors(p, bad_gain)[0] > 2e-2
 
 
@@ -592,7 +550,7 @@ def _rrr_centres(p: dict, q) -> list[np.ndarray]:
 
 def _rrr_errors(p: dict, program: str, end_time: float | None = None) -> tuple[float, float, np.ndarray]:
     """(work-energy balance error, kinematics error, final joint angles)."""
-    t, bodies = simulate_bodies(_settings(program, end_time=end_time))
+    t, bodies = simulate_bodies(retime(program, end_time=end_time))
     r1, r2, r3 = (b["RotationMatrix"] for b in bodies)
     w1, w2, w3 = (b["AngularVelocity"] for b in bodies)
     r12 = np.einsum("nji,njk->nik", r1, r2)
@@ -643,7 +601,7 @@ def _rrr_static_pose(p: dict) -> np.ndarray:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_rrr_robot_work_energy_balance(seed):
-    p, program = _program("rrr_articulated_robot_with_3d_cubic_trajectory", seed)
+    p, program = reference("rrr_articulated_robot_with_3d_cubic_trajectory", seed)
     balance, kinematics, _ = _rrr_errors(p, program)
     assert balance < 1e-4
     assert kinematics < 1e-9
@@ -651,7 +609,7 @@ def test_rrr_robot_work_energy_balance(seed):
 
 @pytest.mark.parametrize("seed", SEEDS[:2])
 def test_rrr_robot_static_sag_at_end_pose(seed):
-    p, program = _program("rrr_articulated_robot_with_3d_cubic_trajectory", seed)
+    p, program = reference("rrr_articulated_robot_with_3d_cubic_trajectory", seed)
     _, _, final = _rrr_errors(p, program, end_time=5.0)
     expected = _rrr_static_pose(p)
     assert np.max(np.abs(final - expected)) < 1e-8
@@ -660,10 +618,10 @@ def test_rrr_robot_static_sag_at_end_pose(seed):
 
 def test_rrr_robot_detects_wrong_parameters():
     slug = "rrr_articulated_robot_with_3d_cubic_trajectory"
-    p, program = _program(slug, 0)
-    heavy_forearm = _perturb(program, "sideLengths=[length3, w, w]", "sideLengths=[length3, w, 1.05 * w]")
+    p, program = reference(slug, 0)
+    heavy_forearm = perturb(program, "sideLengths=[length3, w, w]", "sideLengths=[length3, w, 1.05 * w]")
     assert _rrr_errors(p, heavy_forearm)[0] > 1e-3
     _, _, final = _rrr_errors(p, heavy_forearm, end_time=5.0)
     assert np.max(np.abs(final - _rrr_static_pose(p))) > 1e-4
-    bad_gain = _perturb(program, "stiffness=kp,", "stiffness=1.05 * kp,")
+    bad_gain = perturb(program, "stiffness=kp,", "stiffness=1.05 * kp,")
     assert _rrr_errors(p, bad_gain)[0] > 1e-3

@@ -8,50 +8,11 @@ tolerances are chosen well below what a wrong parameter in the ground truth prod
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from simulate import SOLVE, simulate
-
-from meceng.tasks.registry import default_registry
+from simulate import perturb, reference, retime, simulate
 
 SEEDS = (0, 1, 2, 3)
-
-
-def _model(slug: str):
-    return default_registry().get(slug)
-
-
-def _program(slug: str, seed: int, **overrides) -> tuple[dict, str]:
-    model = _model(slug)
-    values = dict(model.sample_params(seed))
-    values.update(overrides)
-    return values, model.reference_program(values, "", seed)
-
-
-def _settings(program: str, *, refine: int = 1, spectral_radius: float | None = None) -> str:
-    """More steps and/or a non-dissipative integrator, for comparison with closed forms."""
-    lines = []
-    key_rho = "simulationSettings.timeIntegration.generalizedAlpha.spectralRadius"
-    if refine != 1:
-        key = "simulationSettings.timeIntegration.numberOfSteps = "
-        start = program.index(key) + len(key)
-        end = program.index("\n", start)
-        steps = int(program[start:end])
-        program = program[:start] + str(steps * refine) + program[end:]
-    if spectral_radius is not None:
-        lines.append(f"{key_rho} = {spectral_radius}")
-    return program.replace(SOLVE, "\n".join([*lines, SOLVE]))
-
-
-def _perturb(program: str, old: str, new: str) -> str:
-    assert program.count(old) == 1, old
-    return program.replace(old, new)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -69,22 +30,22 @@ def _projectile_error(v: dict, program: str) -> float:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_flying_mass_point_projectile(seed):
-    v, program = _program("flying_mass_point", seed)
+    v, program = reference("flying_mass_point", seed)
     assert _projectile_error(v, program) < 1e-8
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_free_fall_mass_point(seed):
-    v, program = _program("free_fall_mass_point", seed)
+    v, program = reference("free_fall_mass_point", seed)
     assert _projectile_error(v, program) < 1e-8
 
 
 def test_projectile_detects_wrong_gravity():
-    v, program = _program("flying_mass_point", 0)
-    bad = _perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.001 * gravity]")
+    v, program = reference("flying_mass_point", 0)
+    bad = perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.001 * gravity]")
     assert _projectile_error(v, bad) > 1e-4
-    v, program = _program("free_fall_mass_point", 0)
-    bad = _perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.001 * gravity]")
+    v, program = reference("free_fall_mass_point", 0)
+    bad = perturb(program, "gravity=[0, 0, -gravity]", "gravity=[0, 0, -1.001 * gravity]")
     assert _projectile_error(v, bad) > 1e-4
 
 
@@ -94,7 +55,7 @@ def test_projectile_detects_wrong_gravity():
 
 def _hanging_oscillator_error(v: dict, program: str) -> tuple[float, float, float]:
     """(trajectory error / amplitude, period error, equilibrium error / (m g / k)), undamped or damped."""
-    t, q, _ = simulate(_settings(program, refine=10, spectral_radius=1.0))
+    t, q, _ = simulate(retime(program, refine=10, spectral_radius=1.0))
     m, k, d, g = v["mass"], v["stiffness"], v["damping"], v["gravity"]
     shift = m * g / k
     y_eq = -v["length"] - shift
@@ -119,7 +80,7 @@ def _hanging_oscillator_error(v: dict, program: str) -> tuple[float, float, floa
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_single_mass_oscillator_with_gravity_undamped(seed):
-    v, program = _program("single_mass_oscillator_with_gravity", seed, damping=0.0)
+    v, program = reference("single_mass_oscillator_with_gravity", seed, damping=0.0)
     traj_err, period_err, eq_err = _hanging_oscillator_error(v, program)
     assert traj_err < 2e-3
     assert period_err < 1e-4
@@ -128,17 +89,17 @@ def test_single_mass_oscillator_with_gravity_undamped(seed):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_single_mass_oscillator_with_gravity_damped(seed):
-    v, program = _program("single_mass_oscillator_with_gravity", seed)
+    v, program = reference("single_mass_oscillator_with_gravity", seed)
     assert v["damping"] > 0
     traj_err, _, _ = _hanging_oscillator_error(v, program)
     assert traj_err < 2e-3
 
 
 def test_single_mass_oscillator_with_gravity_detects_wrong_parameters():
-    v, program = _program("single_mass_oscillator_with_gravity", 0, damping=0.0)
-    bad_mass = _perturb(program, "mass=mass,", "mass=1.01 * mass,")
+    v, program = reference("single_mass_oscillator_with_gravity", 0, damping=0.0)
+    bad_mass = perturb(program, "mass=mass,", "mass=1.01 * mass,")
     assert _hanging_oscillator_error(v, bad_mass)[0] > 1e-2
-    bad_gravity = _perturb(program, "gravity=[0, -gravity, 0]", "gravity=[0, -1.003 * gravity, 0]")
+    bad_gravity = perturb(program, "gravity=[0, -gravity, 0]", "gravity=[0, -1.003 * gravity, 0]")
     assert _hanging_oscillator_error(v, bad_gravity)[2] > 2e-3
 
 
@@ -158,7 +119,7 @@ def _double_oscillator_matrices(v: dict):
 
 def _double_oscillator_error(v: dict, program: str) -> tuple[float, float]:
     """(trajectory error / initial displacement, relative energy drift if undamped)."""
-    t, q, mbs = simulate(_settings(program, refine=10, spectral_radius=1.0))
+    t, q, mbs = simulate(retime(program, refine=10, spectral_radius=1.0))
     M, K, D = _double_oscillator_matrices(v)
     assert np.max(np.abs(q[:, [1, 2, 4, 5]])) == 0.0  # motion stays on the x-axis
     x = np.column_stack([q[:, 0] - v["length1"], q[:, 3] - v["length1"] - v["length2"]])
@@ -189,7 +150,7 @@ def _double_oscillator_error(v: dict, program: str) -> tuple[float, float]:
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_double_mass_oscillator_undamped_modes_and_energy(seed):
-    v, program = _program("double_mass_oscillator", seed, damping1=0.0, damping2=0.0)
+    v, program = reference("double_mass_oscillator", seed, damping1=0.0, damping2=0.0)
     traj_err, energy_err = _double_oscillator_error(v, program)
     assert traj_err < 5e-3
     assert energy_err < 1e-6
@@ -197,22 +158,22 @@ def test_double_mass_oscillator_undamped_modes_and_energy(seed):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_double_mass_oscillator_damped(seed):
-    v, program = _program("double_mass_oscillator", seed)
+    v, program = reference("double_mass_oscillator", seed)
     traj_err, _ = _double_oscillator_error(v, program)
     assert traj_err < 5e-3
 
 
 def test_double_mass_oscillator_detects_wrong_parameters():
-    v, program = _program("double_mass_oscillator", 0, damping1=0.0, damping2=0.0)
+    v, program = reference("double_mass_oscillator", 0, damping1=0.0, damping2=0.0)
     for old, new in [
         ("mass=mass1", "mass=1.01 * mass1"),
         ("mass=mass2)", "mass=1.01 * mass2)"),
         ("stiffness=stiffness1", "stiffness=1.01 * stiffness1"),
         ("stiffness=stiffness2", "stiffness=1.01 * stiffness2"),
     ]:
-        assert _double_oscillator_error(v, _perturb(program, old, new))[0] > 2e-2, old
-    v, program = _program("double_mass_oscillator", 0)
-    bad = _perturb(program, "damping=damping2", "damping=1.1 * damping2")
+        assert _double_oscillator_error(v, perturb(program, old, new))[0] > 2e-2, old
+    v, program = reference("double_mass_oscillator", 0)
+    bad = perturb(program, "damping=damping2", "damping=1.1 * damping2")
     assert _double_oscillator_error(v, bad)[0] > 1e-2
 
 
@@ -226,7 +187,7 @@ def _double_pendulum_errors(v: dict, program: str) -> tuple[float, float, float,
     Run with 10x the steps (the default numerical damping; a spectral radius of 1 makes the
     index-3 velocities oscillate) so that central differences give accurate velocities.
     """
-    t, q, mbs = simulate(_settings(program, refine=10))
+    t, q, mbs = simulate(retime(program, refine=10))
     m1, m2, g = v["mass1"], v["mass2"], v["gravity"]
     L1, L2 = v["length1"], v["length2"]
     phi1, phi2 = np.radians(v["angle1_deg"]), np.radians(v["angle2_deg"])
@@ -252,7 +213,7 @@ def _double_pendulum_errors(v: dict, program: str) -> tuple[float, float, float,
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_double_pendulum_energy_and_constraints(seed):
-    v, program = _program("double_pendulum", seed)
+    v, program = reference("double_pendulum", seed)
     init_err, constraint_err, end_err, fd_err = _double_pendulum_errors(v, program)
     assert init_err < 1e-12
     assert constraint_err < 1e-8
@@ -262,7 +223,7 @@ def test_double_pendulum_energy_and_constraints(seed):
 
 def test_double_pendulum_large_angles():
     """The corner of the parameter ranges with the fastest motion still conserves energy."""
-    v, program = _program("double_pendulum", 0, angle1_deg=40.0, angle2_deg=-40.0, mass1=0.2, mass2=3.0)
+    v, program = reference("double_pendulum", 0, angle1_deg=40.0, angle2_deg=-40.0, mass1=0.2, mass2=3.0)
     _, constraint_err, end_err, fd_err = _double_pendulum_errors(v, program)
     assert constraint_err < 1e-8
     assert end_err < 1e-6
@@ -270,16 +231,16 @@ def test_double_pendulum_large_angles():
 
 
 def test_double_pendulum_detects_wrong_parameters():
-    v, program = _program("double_pendulum", 1)
-    bad_mass = _perturb(program, "mass=mass2,", "mass=1.05 * mass2,")
+    v, program = reference("double_pendulum", 1)
+    bad_mass = perturb(program, "mass=mass2,", "mass=1.05 * mass2,")
     assert max(_double_pendulum_errors(v, bad_mass)[2:]) > 1e-3
-    bad_gravity = _perturb(
+    bad_gravity = perturb(
         program, "mass=mass1, gravity=[0, -gravity, 0]", "mass=mass1, gravity=[0, -1.05 * gravity, 0]"
     )
     assert max(_double_pendulum_errors(v, bad_gravity)[2:]) > 5e-4
-    bad_length = _perturb(program, "phi1 = angle1_deg", "length2 = 1.001 * length2\nphi1 = angle1_deg")
+    bad_length = perturb(program, "phi1 = angle1_deg", "length2 = 1.001 * length2\nphi1 = angle1_deg")
     init_err, constraint_err, _, _ = _double_pendulum_errors(v, bad_length)
     assert init_err > 1e-4
     assert constraint_err > 1e-4
-    bad_angle = _perturb(program, "phi2 = angle2_deg", "phi2 = 1.01 * angle2_deg")
+    bad_angle = perturb(program, "phi2 = angle2_deg", "phi2 = 1.01 * angle2_deg")
     assert _double_pendulum_errors(v, bad_angle)[0] > 1e-4

@@ -7,39 +7,20 @@ parameter in a ground truth shows up as a violated balance law or a wrong period
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
-
-sys.path.insert(0, str(Path(__file__).parent))
-from simulate import SOLVE, cuboid, kinetic_energy, simulate, simulate_bodies
-
-from meceng.tasks.registry import default_registry
+from simulate import cuboid, kinetic_energy, params, planar_angle, program_for, retime, simulate, simulate_bodies
 
 SEEDS = (0, 1, 2, 3)
 
 #: Added before ``mbs.Assemble()``: sensors for the centre of mass (the reference point of every
 #: body here), its velocity, the global angular velocity and the rotation matrix of each rigid body.
 def _program(slug: str, values: dict, seed: int, *, conservative: bool = False) -> str:
-    program = default_registry().get(slug).reference_program(values, "", seed)
-    if conservative:  # no numerical damping, so energy is conserved to integration accuracy
-        program = program.replace(
-            SOLVE, f"simulationSettings.timeIntegration.generalizedAlpha.spectralRadius = 1\n{SOLVE}"
-        )
-    return program
+    # conservative: no numerical damping, so energy is conserved to integration accuracy
+    return retime(program_for(slug, values, seed), spectral_radius=1 if conservative else None)
 
 
-def _params(slug: str, seed: int, **changes) -> dict:
-    values = dict(default_registry().get(slug).sample_params(seed))
-    values.update(changes)
-    return values
-
-
-def _planar_angle(q: np.ndarray, i0: int, axis: int) -> np.ndarray:
-    """Unwrapped rotation angle about a fixed global axis (1, 2, 3 = x, y, z) from Euler parameters."""
-    return np.unwrap(2 * np.arctan2(q[:, i0 + 3 + axis], q[:, i0 + 3]))
 
 
 def _zero_crossing_period(t: np.ndarray, x: np.ndarray) -> float:
@@ -62,7 +43,7 @@ def _pendulum_constants(p: dict) -> tuple[float, float, float]:
 @pytest.mark.parametrize("seed", SEEDS)
 def test_rigid_pendulum_small_angle_period(seed):
     slug = "single_pendulum_rigid_body"
-    p = _params(slug, seed, angle_deg=3.0)
+    p = params(slug, seed, angle_deg=3.0)
     m, j_o, a = _pendulum_constants(p)
     phi0 = math.radians(p["angle_deg"])
     expected = 2 * math.pi * math.sqrt(j_o / (m * p["gravity"] * a)) * (1 + phi0**2 / 16)
@@ -70,7 +51,7 @@ def test_rigid_pendulum_small_angle_period(seed):
     program = _program(slug, p, seed).replace("endTime = 2.0", "endTime = 4.0")
     program = program.replace("numberOfSteps = 2000", "numberOfSteps = 4000")
     t, q, _ = simulate(program)
-    phi = _planar_angle(q, 0, 3)
+    phi = planar_angle(q, 0, 3)
     assert abs(phi[0] - phi0) < 1e-12
     period = _zero_crossing_period(t, phi)
     assert period == pytest.approx(expected, rel=2e-4)
@@ -79,7 +60,7 @@ def test_rigid_pendulum_small_angle_period(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_rigid_pendulum_energy_and_pivot(seed):
     slug = "single_pendulum_rigid_body"
-    p = _params(slug, seed, angle_deg=60.0)
+    p = params(slug, seed, angle_deg=60.0)
     m, j_o, a = _pendulum_constants(p)
     _, j_c = cuboid(p["density"], (p["width"], p["length"], p["thickness"]))
     _, q, (link,) = simulate_bodies(_program(slug, p, seed, conservative=True))
@@ -91,7 +72,7 @@ def test_rigid_pendulum_energy_and_pivot(seed):
     assert np.allclose(np.linalg.norm(pos, axis=1), a, atol=1e-8)
     assert np.allclose(pos[:, 2], 0, atol=1e-10)
     # starts at the downward-deflected position and swings to -phi0 (energy conservation)
-    phi = _planar_angle(q, 0, 3)
+    phi = planar_angle(q, 0, 3)
     assert phi.min() == pytest.approx(-math.radians(60.0), abs=1e-4)
     # rotational kinetic energy about the pivot equals the potential energy lost
     omega = link["AngularVelocity"][:, 2]
@@ -104,7 +85,7 @@ def test_rigid_pendulum_energy_and_pivot(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_flying_rigid_body(seed):
     slug = "flying_rigid_body"
-    p = _params(slug, seed)
+    p = params(slug, seed)
     _, j = cuboid(p["density"], (p["size_x"], p["size_y"], p["size_z"]))
     t, q, (body,) = simulate_bodies(_program(slug, p, seed))
     # projectile motion of the centre of mass
@@ -129,7 +110,7 @@ def test_flying_rigid_body(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_rotor_spin_up(seed):
     slug = "rigid_rotor_simply_supported"
-    p = _params(slug, seed)
+    p = params(slug, seed)
     r = p["radius"]
     mass = p["density"] * math.pi * r * r * p["length"]
     j = 0.5 * mass * r * r
@@ -145,7 +126,7 @@ def test_rotor_spin_up(seed):
     assert np.max(np.abs(omega[:, 0] - expected_omega)) < 1e-5 * expected_omega[-1]
     assert np.max(np.abs(omega[:, 1:])) < 1e-9
     # rotation angle
-    angle = _planar_angle(q, 0, 1)
+    angle = planar_angle(q, 0, 1)
     expected = p["omega0"] * t + p["torque"] * t**2 / (2 * j)
     assert np.max(np.abs(angle - expected)) < 2e-5 * expected[-1]
     # the rotor stays centred and spins about x only (bearings carry gravity)
@@ -159,14 +140,14 @@ def test_rotor_spin_up(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_slider_crank_energy_and_kinematics(seed):
     slug = "slider_crank_rigid_bodies"
-    p = _params(slug, seed)
+    p = params(slug, seed)
     r, rod_l, w, s, g = p["crank_length"], p["rod_length"], p["width"], p["slider_size"], p["gravity"]
     props = [cuboid(p["density"], sides) for sides in ((r, w, w), (rod_l, w, w), (s, s, s))]
     # the default numerical damping (spectral radius 0.9) dissipates O(h^2) energy; spectral radius
     # 1 is unstable with index-3 constraints, so refine the step instead (4x: relative loss ~2e-4)
     program = _program(slug, p, seed).replace("numberOfSteps = 2000", "numberOfSteps = 8000")
     _, q, bodies = simulate_bodies(program)
-    theta = _planar_angle(q, 0, 3)
+    theta = planar_angle(q, 0, 3)
     theta0 = math.radians(p["crank_angle_deg"])
     assert abs(math.remainder(theta[0] - theta0, 2 * math.pi)) < 1e-12
 
