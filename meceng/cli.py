@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.tasks.registry import default_registry
 
 LEVELS = ("1", "2", "3a", "3b")
@@ -78,8 +79,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--max-rounds", type=_positive_int, default=6, help="model calls per task in --agent loop")
     parser.add_argument("--token-budget", type=_positive_int, default=30000,
                         help="completion tokens per task in --agent loop")
-    parser.add_argument("--select-template", default="CI1")
-    parser.add_argument("--code-template", default="MBS1")
+    parser.add_argument("--select-template", default=DEFAULT_SELECT)
+    parser.add_argument("--code-template", default=DEFAULT_CODE)
     parser.add_argument("--no-progress", action="store_true")
     parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
                         help="continue a killed run in RUN_DIR with its saved settings")

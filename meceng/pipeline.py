@@ -30,6 +30,7 @@ from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
 from meceng.agents.catalog import Catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
 from meceng.agents.loop import run_agent
+from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
 from meceng.agents.toolbox import Toolbox
 from meceng.eval import EVALUATOR_VERSION
@@ -57,8 +58,8 @@ class RunSettings:
     run_name: str | None = None
     workers: int = max(1, os.cpu_count() or 1)
     exec_timeout_s: float = 60.0
-    select_template: str = "CI1"
-    code_template: str = "MBS1"
+    select_template: str = DEFAULT_SELECT
+    code_template: str = DEFAULT_CODE
     solution_tolerance: float = 1e-5
     progress: bool = True
     resume: bool = False

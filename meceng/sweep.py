@@ -21,6 +21,7 @@ from typing import Any
 import httpx
 
 from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 
 BASE_CTX = 4096
 BASE_PREDICT = 2048
@@ -44,8 +45,8 @@ class SweepSpec:
     models: tuple[ModelSpec, ...]
     temperatures: tuple[float, ...] = (0.0,)
     thinks: tuple[bool | str, ...] = (False,)
-    select_templates: tuple[str, ...] = ("CI1",)
-    code_templates: tuple[str, ...] = ("MBS1",)
+    select_templates: tuple[str, ...] = (DEFAULT_SELECT,)
+    code_templates: tuple[str, ...] = (DEFAULT_CODE,)
     levels: tuple[str, ...] = ("1", "2")
     only: tuple[str, ...] = ()
     variations: int = 20
@@ -107,8 +108,8 @@ def load_spec(path: Path) -> SweepSpec:
         models=tuple(models),
         temperatures=tuple(float(t) for t in _tuple(grid.get("temperature", [0.0]))),
         thinks=_tuple(grid.get("think", [False])),
-        select_templates=_tuple(grid.get("select_template", ["CI1"])),
-        code_templates=_tuple(grid.get("code_template", ["MBS1"])),
+        select_templates=_tuple(grid.get("select_template", [DEFAULT_SELECT])),
+        code_templates=_tuple(grid.get("code_template", [DEFAULT_CODE])),
         levels=tuple(str(x) for x in _tuple(data.get("levels", ["1", "2"]))),
         only=tuple(str(x) for x in _tuple(data.get("only", []))),
         variations=int(data.get("variations", 20)),

@@ -16,7 +16,7 @@ from typing import Any
 from meceng.agents.catalog import Catalog
 from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMError, ToolCall
 from meceng.agents.parsing import extract_code
-from meceng.agents.prompts import code_prompt, gold_code
+from meceng.agents.prompts import DEFAULT_CODE, code_prompt, gold_code
 from meceng.agents.steps import Selection
 from meceng.agents.toolbox import Toolbox
 from meceng.tasks.base import TaskInstance
@@ -77,7 +77,7 @@ async def run_agent(
     selection: Selection,
     toolbox: Toolbox,
     *,
-    template: str = "MBS1",
+    template: str = DEFAULT_CODE,
     max_rounds: int = 6,
     token_budget: int = 30000,
 ) -> AgentResult:

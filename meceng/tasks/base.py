@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import textwrap
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -73,10 +73,6 @@ class SimSettings:
     end_time: float
     steps: int
     extra: tuple[str, ...] = ()
-
-    @property
-    def step_size(self) -> float:
-        return self.end_time / self.steps
 
     def block(self) -> str:
         lines = [
@@ -143,8 +139,6 @@ class TaskModel:
     model_code: str
     sim: SimSettings
     derive: Any = None  # Callable[[dict], dict] | None; Any keeps the dataclass hashable
-    notes: str = ""
-    tags: tuple[str, ...] = field(default=())
 
     @property
     def slug(self) -> str:

@@ -18,14 +18,7 @@ from typing import Any
 import numpy as np
 
 from meceng.tools import guard
-
-STAGES = ("started", "meshed", "reduced")
-
-
-def _describe(exc: BaseException) -> str:
-    if isinstance(exc, SystemExit):
-        return f"program called exit({exc.code!r})"
-    return f"{type(exc).__name__}: {exc}"
+from meceng.tools.runner import describe_exception
 
 
 def run_part(job: dict[str, Any], workdir: Path) -> int:
@@ -84,7 +77,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         set_guard(True)
         exec(compile(job["program"], str(workdir / "program.py"), "exec"), namespace)
     except BaseException as exc:  # every error of the program is a verdict
-        result.update(error=_describe(exc), error_type=type(exc).__name__)
+        result.update(error=describe_exception(exc)["error"], error_type=type(exc).__name__)
     finally:
         set_guard(False)
     result["program_time"] = time.perf_counter() - t0
@@ -95,7 +88,8 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         try:
             result["part"] = _describe_part(fem, state, workdir, token)
         except Exception as exc:  # a half-built part is a verdict too
-            result.update(error=f"could not read the part: {_describe(exc)}", error_type=type(exc).__name__)
+            reason = describe_exception(exc)["error"]
+            result.update(error=f"could not read the part: {reason}", error_type=type(exc).__name__)
     result.update(stage=state["stage"], warnings=warnings, token=token)
     tmp = workdir / f"result-{token}.json.tmp"
     tmp.write_text(json.dumps(result))

@@ -31,8 +31,6 @@ import numpy as np
 
 from meceng.tools import guard
 
-STAGES = ("started", "reached_assemble", "finished_assemble", "solver_started", "solved")
-
 
 class HandOver(BaseException):
     """Raised at the program's solver call; BaseException so ``except Exception`` can't eat it."""
@@ -148,9 +146,6 @@ class Harness:
 # ----------------------------------------------------------------------------- capture
 
 
-REF_KEYS = ("Number", "Numbers")
-
-
 def to_jsonable(value: Any) -> Any:
     """Item dict values to JSON: arrays to lists, index types to int, callables to a marker."""
     if callable(value) and not isinstance(value, type):
@@ -233,12 +228,12 @@ def run(job_path: Path) -> int:
         harness.guard(False)
 
     if program_error is not None and harness.stage != "finished_assemble":
-        result.update(_describe(program_error), stage=harness.stage)
+        result.update(describe_exception(program_error), stage=harness.stage)
         result["program_time"] = time.perf_counter() - t_start
         _write_result(workdir, result, harness)
         return 0
     if program_error is not None:
-        harness.warnings.append(f"program raised after assemble: {_describe(program_error)['error']}")
+        harness.warnings.append(f"program raised after assemble: {describe_exception(program_error)['error']}")
     if harness.mbs is None or harness.stage not in ("finished_assemble",):
         result.update(stage=harness.stage, error="the program never called mbs.Assemble()",
                       error_type="NoAssemble")
@@ -255,7 +250,7 @@ def run(job_path: Path) -> int:
         harness.guard(True)  # the program's user functions run inside the solver
         harness.solve(job["sim_block"], namespace)
     except BaseException as exc:
-        result.update(_describe(exc))
+        result.update(describe_exception(exc))
     finally:
         harness.guard(False)
     result["solve_time"] = time.perf_counter() - t_solve
@@ -264,7 +259,7 @@ def run(job_path: Path) -> int:
     return 0
 
 
-def _describe(exc: BaseException) -> dict[str, Any]:
+def describe_exception(exc: BaseException) -> dict[str, Any]:
     if isinstance(exc, SystemExit):
         return {"error": f"program called exit({exc.code!r})", "error_type": "SystemExit"}
     tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
