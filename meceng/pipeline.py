@@ -313,8 +313,11 @@ async def _run_agent_task(
                             max_rounds=settings.max_rounds, token_budget=settings.token_budget)
     t_llm = time.perf_counter() - t0
     selected = selection.names if selection.infrastructure_error is None else ()
-    first, _, _ = await evaluator.evaluate(instance, agent.first_code, selected, agent.error)
     verdict, candidate, reference = await evaluator.evaluate(instance, agent.final_code, selected, agent.error)
+    if agent.first_code == agent.final_code:  # answered at once, or never changed: same verdict
+        first = verdict
+    else:
+        first, _, _ = await evaluator.evaluate(instance, agent.first_code, selected, agent.error)
     generation = Generation(prompt=agent.transcript[0]["content"], answer=agent.transcript[-1].get("content", ""),
                             code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
                             meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
