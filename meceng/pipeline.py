@@ -20,26 +20,29 @@ import re
 import time
 import traceback
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import structlog
 
 from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
-from meceng.agents.catalog import Catalog, rigid_catalog
+from meceng.agents.catalog import Catalog, part_catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
 from meceng.agents.loop import run_agent
-from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
+from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_PART_CODE, DEFAULT_PART_SELECT, DEFAULT_SELECT
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
 from meceng.agents.toolbox import Toolbox
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.eval.parts import evaluate_part, minimum_maxh, part_data
 from meceng.logs import get_logger
 from meceng.tasks.base import TaskInstance, program_header
 from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import Execution, ExecutionLimits, child_env, execute
+from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
 log = get_logger("meceng.pipeline")
@@ -67,6 +70,9 @@ class RunSettings:
     agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code
     max_rounds: int = 6
     token_budget: int = 30000
+    part_select_template: str = DEFAULT_PART_SELECT
+    part_code_template: str = DEFAULT_PART_CODE
+    part_timeout_s: float = 300.0  # meshing + HCB of a part; the paper's parts take seconds
 
     @classmethod
     def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
@@ -82,6 +88,9 @@ class RunSettings:
             code_template=data["prompt"]["code_template"], resume=True,
             executor=pipeline.get("executor", "fork"), agent=pipeline.get("agent", "pipeline"),
             max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
+            part_timeout_s=pipeline.get("part_timeout_s", 300.0),
+            part_select_template=data["prompt"].get("part_select_template", DEFAULT_PART_SELECT),
+            part_code_template=data["prompt"].get("part_code_template", DEFAULT_PART_CODE),
         )
 
     def to_json(self) -> dict[str, Any]:
@@ -92,9 +101,11 @@ class RunSettings:
                 "token_budget": self.token_budget,
                 "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
-                "solution_tolerance": self.solution_tolerance,
+                "solution_tolerance": self.solution_tolerance, "part_timeout_s": self.part_timeout_s,
             },
-            "prompt": {"select_template": self.select_template, "code_template": self.code_template},
+            "prompt": {"select_template": self.select_template, "code_template": self.code_template,
+                       "part_select_template": self.part_select_template,
+                       "part_code_template": self.part_code_template},
         }
 
 
@@ -120,20 +131,96 @@ class Evaluator:
     """Runs candidate and reference programs in isolation (bounded by ``workers``) and grades."""
 
     def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog,
-                 pool: WarmPool | None = None) -> None:
+                 pool: WarmPool | None = None, parts: Catalog | None = None,
+                 part_timeout_s: float = 300.0) -> None:
         self.slots = asyncio.Semaphore(workers)
         self.pool = pool
         self.limits = limits
         self.tolerances = tolerances
         self.catalog = catalog
+        self.part_catalog = parts or part_catalog()
+        self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
         self.references = ReferenceCache(self._run_reference)
+        self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
+
+    def catalog_for(self, instance: TaskInstance) -> Catalog:
+        return self.part_catalog if instance.kind == "part" else self.catalog
 
     async def _execute(self, program: str, instance: TaskInstance, check: bool) -> Execution:
         async with self.slots:
             return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
+        if instance.kind == "part":
+            return await self._execute_part(instance.reference_program, instance, check=False)
         return await self._execute(instance.reference_program, instance, check=False)
+
+    async def _execute_part(self, program: str, instance: TaskInstance, check: bool,
+                            save_to: Path | None = None) -> Execution:
+        limits = replace(self.part_limits, n_modes=instance.part.n_modes,
+                         save_fem_to=str(save_to) if save_to is not None else None)
+        async with self.slots:
+            return await execute(program, "", limits, check=check, pool=self.pool)
+
+    async def _reference_at(self, instance: TaskInstance, maxh: float) -> Execution:
+        """The ground-truth part meshed with another maxh (run once per instance and size)."""
+        key = (instance.key, maxh)
+        if key not in self._remeshed:
+            program = re.sub(r"GenerateMesh\(maxh=[^)]*\)", f"GenerateMesh(maxh={maxh!r})", instance.reference_program)
+            self._remeshed[key] = asyncio.ensure_future(self._execute_part(program, instance, check=False))
+        return await asyncio.shield(self._remeshed[key])
+
+    async def evaluate_part(
+        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None,
+        save_to: Path | None = None,
+    ) -> tuple[Verdict, Execution, Execution, dict[str, Any]]:
+        """Level 3a: ground truth first (its bounding box sets the finest allowed maxh), then the
+        mesh-size pre-check, the candidate part, the part metrics. ``save_to`` keeps a passing part.
+
+        Returns the verdict, both executions and facts about the pre-check and the metrics' time.
+        """
+        reference = await self.references.get(instance)
+        facts: dict[str, Any] = {}
+        if reference.error is not None or reference.part is None or reference.surface is None:
+            failure = f"ground-truth part failed: {reference.error or 'no part captured'}"
+            return Verdict((), infrastructure_error=failure), Execution(stage="not_run"), reference, facts
+        truth = part_data(reference.part, reference.surface)
+        minimum = minimum_maxh(truth, instance.part.maxh)
+        facts["minimum_maxh"] = minimum
+        pending = save_to.with_name(save_to.name + ".pending.npz") if save_to is not None else None
+        if code is None:
+            candidate = Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
+        else:
+            mesh_check = check_mesh_size(code, minimum)
+            facts.update(maxh=list(mesh_check.maxh), maxh_raised=mesh_check.raised)
+            if mesh_check.code is None:
+                candidate = Execution(stage="flagged", error=mesh_check.error, error_kind="mesh_size")
+            else:
+                candidate = await self._execute_part(mesh_check.code, instance, check=True, save_to=pending)
+        produced = None
+        frequencies = None
+        if candidate.error is None and candidate.part is not None and candidate.surface is not None:
+            produced = part_data(candidate.part, candidate.surface)
+            sizes = {max(v, minimum) for v in facts.get("maxh", [])}
+            if len(sizes) == 1 and (size := sizes.pop()) != instance.part.maxh:
+                remeshed = await self._reference_at(instance, size)
+                if remeshed.part is not None:
+                    frequencies = np.asarray(remeshed.part["eigenfrequencies"], dtype=float)
+                    facts["reference_frequencies_at_maxh"] = size
+        t0 = time.perf_counter()
+        stages = await asyncio.to_thread(
+            evaluate_part, produced, truth, selected=selected, required=instance.required_components,
+            dependencies=self.part_catalog.dependency_map(), failure=candidate.error,
+            reference_frequencies=frequencies)
+        facts["metrics_s"] = time.perf_counter() - t0
+        verdict = Verdict(tuple(stages))
+        if pending is not None and save_to is not None and pending.exists():
+            if verdict.overall:
+                os.replace(pending, save_to)
+                facts["saved_part"] = str(save_to)
+            else:
+                pending.unlink()
+        return verdict, candidate, reference, facts
 
     def prefetch(self, instance: TaskInstance) -> None:
         """Start the reference execution now, while the LLM is still busy with this task."""
@@ -200,14 +287,21 @@ class RunWriter:
         self.finished = read_jsonl(self.journal_path)  # also cuts a line half-written by a kill
         self._journal = open(self.journal_path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
 
+    def part_path(self, instance: TaskInstance) -> Path:
+        """Where a passing part's reduced FEM model is kept (for its assembly)."""
+        folder = self.run_dir / "parts"
+        folder.mkdir(parents=True, exist_ok=True)
+        return folder / f"{_safe_name(instance.key.replace('/', '--'))}.npz"
+
     def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
         folder = self.run_dir / "programs" / instance.slug
         folder.mkdir(parents=True, exist_ok=True)
-        reference = folder / f"seed{instance.seed}_reference.py"
+        stem = f"seed{instance.seed}" + (f"_for_{_safe_name(instance.origin)}" if instance.origin else "")
+        reference = folder / f"{stem}_reference.py"
         _write_atomic(reference, instance.reference_program)
         files = {"reference": str(reference.relative_to(self.run_dir))}
         if code is not None:
-            generated = folder / f"seed{instance.seed}_generated.py"
+            generated = folder / f"{stem}_generated.py"
             header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
                                     instance.description)
             _write_atomic(generated, f"{header}\n{code}")
@@ -288,6 +382,8 @@ async def run_task(
     instance: TaskInstance, backend: Backend, catalog: Catalog, evaluator: Evaluator, settings: RunSettings,
     writer: RunWriter,
 ) -> dict[str, Any]:
+    if instance.kind == "part":
+        return await run_part_task(instance, backend, evaluator, settings, writer)
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     selection = await choose_components(backend, instance, catalog, settings.select_template)
@@ -301,6 +397,35 @@ async def run_task(
     files = writer.save_programs(instance, generation.code)
     return task_record(instance, selection, generation, verdict, candidate, reference,
                        {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total}, files)
+
+
+async def run_part_task(
+    instance: TaskInstance, backend: Backend, evaluator: Evaluator, settings: RunSettings, writer: RunWriter,
+) -> dict[str, Any]:
+    """Level 3a (paper Fig. 5): choose part components, write the part program, pre-check its mesh
+    size, mesh and reduce it in isolation, grade it with the part metrics, keep it if it passes."""
+    t0 = time.perf_counter()
+    evaluator.prefetch(instance)
+    catalog = evaluator.part_catalog
+    selection = await choose_components(backend, instance, catalog, settings.part_select_template)
+    generation = await generate_code(backend, instance, catalog, selection, settings.part_code_template)
+    t_llm = time.perf_counter() - t0
+    selected = selection.names if selection.infrastructure_error is None else ()
+    verdict, candidate, reference, facts = await evaluator.evaluate_part(
+        instance, generation.code, selected, generation.error, save_to=writer.part_path(instance))
+    t_total = time.perf_counter() - t0
+    files = writer.save_programs(instance, generation.code)
+    if "saved_part" in facts:
+        files["part"] = str(Path(facts.pop("saved_part")).relative_to(writer.run_dir))
+    timing = {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total,
+              "part_run_s": candidate.wall_time, "reference_run_s": reference.wall_time,
+              **{k: v for k, v in candidate.part_times.items()}, "metrics_s": facts.pop("metrics_s", 0.0)}
+    record = task_record(instance, selection, generation, verdict, candidate, reference, timing, files)
+    record["part"] = {**facts, "spec": instance.part.to_json(), "reference_times": reference.part_times,
+                      "reference_nodes": (reference.part or {}).get("nodes")}
+    if instance.origin:
+        record["origin"] = instance.origin
+    return record
 
 
 async def _run_agent_task(
@@ -448,6 +573,9 @@ async def evaluate_program(
     """Grade one program against the task instance, as if an LLM had written it."""
     catalog = catalog or rigid_catalog()
     evaluator = Evaluator(2, limits or ExecutionLimits(), Tolerances(), catalog)
+    if instance.kind == "part":
+        verdict, candidate, reference, _ = await evaluator.evaluate_part(instance, code, selected, None)
+        return verdict, candidate, reference
     return await evaluator.evaluate(instance, code, selected, None)
 
 

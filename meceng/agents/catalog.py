@@ -85,3 +85,10 @@ def rigid_catalog() -> Catalog:
     from meceng.agents.components_rigid import COMPONENTS
 
     return Catalog(COMPONENTS)
+
+
+def part_catalog() -> Catalog:
+    """Level 3a: geometry and FEM components."""
+    from meceng.agents.components_part import COMPONENTS
+
+    return Catalog(COMPONENTS)

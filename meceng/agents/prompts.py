@@ -156,14 +156,73 @@ open a renderer. Give the complete program in a single ```python block.
 DEFAULT_SELECT = "CI1"
 DEFAULT_CODE = "MBS1"
 
+#: Level 3a: the part is built, meshed and reduced, not simulated (paper section 2.3).
+PART_SELECT_TEMPLATES: dict[str, str] = {
+    "PART1": """\
+You are an expert in CAD geometry with Netgen/NGSolve (netgen.occ) and in flexible multibody
+modelling with Exudyn's FEM interface.
+
+Part description:
+{description}
+
+Available components for geometry generation and FEM processing:
+{menu}
+
+Choose all components that are needed to build the exact geometry of the described part, mesh it,
+import it into Exudyn's FEMinterface with its named interfaces and reduce it. Answer only with the
+list of component names in the following XML-like format, one component per line, and nothing else:
+<components>
+<component>FirstComponentName</component>
+<component>SecondComponentName</component>
+</components>
+""",
+}
+
+PART_CODE_TEMPLATES: dict[str, str] = {
+    "PART1": """\
+You are an expert in CAD geometry with Netgen/NGSolve (netgen.occ) and in flexible multibody
+modelling with Exudyn's FEM interface. Write a complete Python program that builds the following
+machine part, meshes it and prepares it as a reduced flexible body.
+
+Part description:
+{description}
+
+Documentation of the components you may use:
+{context}
+
+Rules:
+- Start the program with:
+  from netgen.occ import *
+  import ngsolve as ngs
+  import numpy as np
+  import exudyn as exu
+  from exudyn.FEM import FEMinterface, HCBstaticModeSelection
+- Build the solid exactly in the coordinate frame of the description (the part is compared without
+  any alignment) and keep the final solid in a variable named `shape`.
+- Name the interface faces exactly as the description says, after all boolean operations, fillets
+  and chamfers.
+- Mesh with ngs.Mesh(OCCGeometry(shape).GenerateMesh(maxh=...)) and HARD-CODE maxh as a number in that
+  call; a program without a literal maxh is not run.
+- Import the mesh with fem = FEMinterface(); fem.ImportMeshFromNGsolve(...) with the material and the
+  interface names as boundaryNamesList, then compute the Hurty-Craig-Bampton modes.
+- Do not read or write files, do not import os, sys, subprocess or similar modules, no visualization.
+- Return the whole program in a single ```python code block.
+""",
+}
+
+DEFAULT_PART_SELECT = "PART1"
+DEFAULT_PART_CODE = "PART1"
+
 
 def select_prompt(template: str, description: str, menu: str) -> str:
-    return SELECT_TEMPLATES[template].format(description=description, menu=menu)
+    templates = PART_SELECT_TEMPLATES if template in PART_SELECT_TEMPLATES else SELECT_TEMPLATES
+    return templates[template].format(description=description, menu=menu)
 
 
 def code_prompt(template: str, description: str, context: str) -> str:
     context = context or "(no components were chosen; use your knowledge of Exudyn)"
-    return CODE_TEMPLATES[template].format(description=description, context=context)
+    templates = PART_CODE_TEMPLATES if template in PART_CODE_TEMPLATES else CODE_TEMPLATES
+    return templates[template].format(description=description, context=context)
 
 
 def gold_selection(names: tuple[str, ...] | list[str]) -> str:

@@ -145,7 +145,7 @@ def evaluate_rigid(
 
 
 def _not_applicable(stage: StageResult) -> bool:
-    return stage.name == "choose_components" and stage.passed is None
+    return stage.name in ("choose_components", "choose_part_components") and stage.passed is None
 
 
 def _jsonable_difference(d: dict[str, Any]) -> dict[str, Any]:

@@ -8,7 +8,7 @@ points of each surface to the other one (both directions; the mean, not the max,
 faceting hides small changes in the max), times the ground truth's surface area, is the volume
 between the surfaces; normalised by the ground truth's volume it must stay below 1 %.
 
-Not wired into the pipeline yet: the level 3a part runner and part task models come next.
+The mesh-size minimum of the pre-check is derived here too, from the ground truth's bounding box.
 """
 
 from __future__ import annotations
@@ -49,6 +49,28 @@ class PartTolerances:
     eigenfrequencies: float = 0.05
     compared_frequencies: int = 3
     samples: int = 20000
+
+
+def part_data(part: Mapping[str, object], surface: tuple[np.ndarray, np.ndarray]) -> PartData:
+    """A part as the part runner described it (its JSON record and its surface arrays)."""
+    return PartData(
+        interfaces=tuple(str(n) for n in part["interfaces"]),  # type: ignore[union-attr]
+        youngs_modulus=float(part["youngs_modulus"]),  # type: ignore[arg-type]
+        poissons_ratio=float(part["poissons_ratio"]),  # type: ignore[arg-type]
+        density=float(part["density"]),  # type: ignore[arg-type]
+        mass=float(part["mass"]),  # type: ignore[arg-type]
+        vertices=np.asarray(surface[0], dtype=float),
+        triangles=np.asarray(surface[1], dtype=np.int64),
+        eigenfrequencies=np.asarray(part.get("eigenfrequencies") or [], dtype=float),
+    )
+
+
+def minimum_maxh(reference: PartData, reference_maxh: float) -> float:
+    """The finest mesh size a part program may ask for: 1 % of the ground truth's bounding-box
+    diagonal, and never more than half the ground truth's own size (an answer that copies the
+    text's maxh is never coarsened)."""
+    extent = reference.vertices.max(axis=0) - reference.vertices.min(axis=0)
+    return float(min(np.linalg.norm(extent) / 100.0, 0.5 * reference_maxh))
 
 
 def surface_area(vertices: np.ndarray, triangles: np.ndarray) -> float:
@@ -102,9 +124,14 @@ def evaluate_part(
     dependencies: Mapping[str, Iterable[str]],
     failure: str | None = None,
     tolerances: PartTolerances | None = None,
+    reference_frequencies: np.ndarray | None = None,
 ) -> tuple[StageResult, ...]:
     """The part stages in the paper's order; ``candidate`` None means the part was not produced
-    (no maxh, meshing failed, crash): every stage after the component choice fails with ``failure``."""
+    (no maxh, meshing failed, crash): every stage after the component choice fails with ``failure``.
+
+    ``reference_frequencies``: the ground truth's eigenfrequencies at the candidate's mesh size,
+    when that differs from the text's (linear tetrahedra are stiff: halving maxh moves the first
+    frequencies by several percent, which says nothing about the part)."""
     tol = tolerances or PartTolerances()
     stages: list[StageResult] = []
     if selected is None:
@@ -137,8 +164,8 @@ def evaluate_part(
     stages.append(StageResult("mesh_match", mesh_error <= tol.mesh,
                               f"volume between the surfaces {100 * mesh_error:.2f} % of the part's volume "
                               f"(mean distance {distance['mean']:.3g} m)"))
-    frequency_error = relative_frequency_error(candidate.eigenfrequencies, reference.eigenfrequencies,
-                                               tol.compared_frequencies)
+    truth = reference.eigenfrequencies if reference_frequencies is None else reference_frequencies
+    frequency_error = relative_frequency_error(candidate.eigenfrequencies, truth, tol.compared_frequencies)
     stages.append(StageResult("eigenfrequencies_match", frequency_error <= tol.eigenfrequencies,
                               f"first {tol.compared_frequencies} eigenfrequencies differ by "
                               f"{100 * frequency_error:.2f} %"))

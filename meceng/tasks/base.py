@@ -99,12 +99,16 @@ class TaskInstance:
     params: dict[str, Any]
     description: str
     required_components: tuple[str, ...]
-    sim: SimSettings
+    sim: SimSettings | None  # None for a part: it is meshed, not simulated
     reference_program: str
+    kind: str = "rigid"  # "rigid" (levels 1, 2), "part" (3a), "assembly" (3b)
+    part: Any = None  # PartSpec of a part instance
+    origin: str = ""  # key of the assembly instance a part was drawn for
 
     @property
     def key(self) -> str:
-        return f"{self.slug}@{self.seed}"
+        own = f"{self.slug}@{self.seed}"
+        return f"{self.origin}/{own}" if self.origin else own
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -116,7 +120,10 @@ class TaskInstance:
             "params": self.params,
             "description": self.description,
             "required_components": list(self.required_components),
-            "sim": {"end_time": self.sim.end_time, "steps": self.sim.steps},
+            "kind": self.kind,
+            **({"sim": {"end_time": self.sim.end_time, "steps": self.sim.steps}} if self.sim else {}),
+            **({"part": self.part.to_json()} if self.part is not None else {}),
+            **({"origin": self.origin} if self.origin else {}),
         }
 
 

@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.tools.safety import check_program
+from meceng.tools.safety import ALLOWED_IMPORT_ROOTS, PART_IMPORT_ROOTS, check_program
 from meceng.tools.warm import WarmPool
 
 #: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
@@ -45,6 +45,7 @@ class ExecutionLimits:
     isolate_network: bool = True
     mode: str = "rigid"  # "part": a level 3a program, captured by the part runner
     n_modes: int = 6
+    save_fem_to: str | None = None  # part mode: keep the program's reduced FEMinterface here (.npz)
 
 
 @dataclass(frozen=True)
@@ -66,6 +67,8 @@ class Execution:
     warnings: tuple[str, ...] = ()
     part: dict[str, Any] | None = None
     surface: tuple[np.ndarray, np.ndarray] | None = None
+    part_times: dict[str, float] = field(default_factory=dict)
+    fem_file: str | None = None
     stdout_tail: str = ""
     stderr_tail: str = ""
     returncode: int | None = None
@@ -93,6 +96,8 @@ class Execution:
             "steps": None if self.times is None else len(self.times),
             "system": self.system,
             "stderr_tail": self.stderr_tail[-2000:],
+            **({"part": self.part, "part_times": self.part_times, "fem_file": self.fem_file}
+               if self.part is not None else {}),
         }
 
 
@@ -160,7 +165,7 @@ async def execute(
     """
     limits = limits or ExecutionLimits()
     if check:
-        verdict = check_program(program)
+        verdict = check_program(program, PART_IMPORT_ROOTS if limits.mode == "part" else ALLOWED_IMPORT_ROOTS)
         if not verdict:
             where = f" (line {verdict.line})" if verdict.line else ""
             return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
@@ -216,7 +221,8 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
     token = secrets.token_hex(16)
     job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
                                "guard": limits.guard, "isolate_network": limits.isolate_network,
-                               "mode": limits.mode, "n_modes": limits.n_modes}))
+                               "mode": limits.mode, "n_modes": limits.n_modes,
+                               "save_fem": limits.save_fem_to is not None}))
     (scratch / "program.py").write_text(program)
     return job, token
 
@@ -290,10 +296,18 @@ def _collect(
     if part is not None and part_path.exists():
         with np.load(part_path) as data:
             surface = (data["vertices"], data["triangles"])
+    fem_file = None
+    fem_path = scratch / f"fem-{token}.npz"
+    if limits.save_fem_to and fem_path.exists():
+        Path(limits.save_fem_to).parent.mkdir(parents=True, exist_ok=True)
+        shutil.move(fem_path, limits.save_fem_to)
+        fem_file = limits.save_fem_to
     error = result.get("error")
     return Execution(
         part=part,
         surface=surface,
+        part_times=result.get("part_times") or {},
+        fem_file=fem_file,
         stage=str(result.get("stage", last_stage)),
         error=error,
         error_kind="exception" if error else None,

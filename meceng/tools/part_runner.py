@@ -23,7 +23,7 @@ from meceng.tools.runner import describe_exception
 
 def run_part(job: dict[str, Any], workdir: Path) -> int:
     # trusted libraries first: netgen loads its OCC kernel through ctypes, which the guard refuses
-    import netgen.occ  # noqa: F401
+    import netgen.occ
     import ngsolve  # noqa: F401
     from exudyn.FEM import FEMinterface
 
@@ -31,15 +31,26 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
     n_modes = int(job.get("n_modes", 6))
     state: dict[str, Any] = {"stage": "started", "fem": None, "material": None, "interfaces": None,
                              "modes_requested": None}
+    times: dict[str, float] = {"mesh_s": 0.0, "import_s": 0.0, "hcb_s": 0.0}
     warnings: list[str] = []
     stage_log = open(workdir / "stage.log", "a", buffering=1)  # noqa: SIM115 - kept open for the run
     stage_log.write("started\n")
 
     original_import = FEMinterface.ImportMeshFromNGsolve
+    original_mesh = netgen.occ.OCCGeometry.GenerateMesh
+
+    def generate_mesh(geometry: Any, *args: Any, **kwargs: Any) -> Any:
+        t = time.perf_counter()
+        try:
+            return original_mesh(geometry, *args, **kwargs)
+        finally:
+            times["mesh_s"] += time.perf_counter() - t
 
     def import_mesh(fem: Any, mesh: Any, density: float, youngsModulus: float, poissonsRatio: float,
                     *args: Any, **kwargs: Any) -> Any:
+        t = time.perf_counter()
         out = original_import(fem, mesh, density, youngsModulus, poissonsRatio, *args, **kwargs)
+        times["import_s"] += time.perf_counter() - t
         state.update(fem=fem, material=(float(youngsModulus), float(poissonsRatio), float(density)),
                      interfaces=tuple(kwargs.get("boundaryNamesList") or ()), stage="meshed")
         stage_log.write("meshed\n")
@@ -57,7 +68,9 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
                 else:
                     args = (args[0], n_modes, *args[2:])
             state["modes_requested"] = requested
+            t = time.perf_counter()
             out = original(fem, *args, **kwargs)
+            times["hcb_s"] += time.perf_counter() - t
             state["stage"] = "reduced"
             stage_log.write("reduced\n")
             return out
@@ -65,6 +78,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         setattr(FEMinterface, name, wrapped)
 
     FEMinterface.ImportMeshFromNGsolve = import_mesh
+    netgen.occ.OCCGeometry.GenerateMesh = generate_mesh
     for name in ("ComputeHurtyCraigBamptonModes", "ComputeHurtyCraigBamptonModesNGsolve"):
         if hasattr(FEMinterface, name):
             raise_modes(name)
@@ -87,10 +101,12 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
     if fem is not None:
         try:
             result["part"] = _describe_part(fem, state, workdir, token)
+            if job.get("save_fem"):  # the reduced part, for the assemblies (FEMinterface's own format)
+                fem.SaveToFile(str(workdir / f"fem-{token}.npz"))
         except Exception as exc:  # a half-built part is a verdict too
             reason = describe_exception(exc)["error"]
             result.update(error=f"could not read the part: {reason}", error_type=type(exc).__name__)
-    result.update(stage=state["stage"], warnings=warnings, token=token)
+    result.update(stage=state["stage"], warnings=warnings, token=token, part_times=times)
     tmp = workdir / f"result-{token}.json.tmp"
     tmp.write_text(json.dumps(result))
     os.replace(tmp, workdir / f"result-{token}.json")

@@ -36,6 +36,9 @@ ALLOWED_IMPORT_ROOTS = frozenset(
     }
 )
 
+#: Part programs (level 3a) also build geometry and meshes.
+PART_IMPORT_ROOTS = ALLOWED_IMPORT_ROOTS | {"netgen", "ngsolve"}
+
 #: Builtins that execute code, open files or escape the namespace.
 FORBIDDEN_NAMES = frozenset(
     {
@@ -96,29 +99,29 @@ class SafetyVerdict:
         return self.ok
 
 
-def check_program(source: str) -> SafetyVerdict:
+def check_program(source: str, allowed_imports: frozenset[str] = ALLOWED_IMPORT_ROOTS) -> SafetyVerdict:
     """Refuse programs that import outside the allow-list or touch files and internals."""
     try:
         tree = ast.parse(source)
     except SyntaxError as exc:
         return SafetyVerdict(False, f"syntax error: {exc.msg}", exc.lineno)
     for node in ast.walk(tree):
-        verdict = _check_node(node)
+        verdict = _check_node(node, allowed_imports)
         if not verdict.ok:
             return verdict
     return SafetyVerdict(True)
 
 
-def _check_node(node: ast.AST) -> SafetyVerdict:
+def _check_node(node: ast.AST, allowed_imports: frozenset[str]) -> SafetyVerdict:
     line = getattr(node, "lineno", None)
     if isinstance(node, ast.Import):
         for alias in node.names:
             root = alias.name.split(".")[0]
-            if root not in ALLOWED_IMPORT_ROOTS:
+            if root not in allowed_imports:
                 return SafetyVerdict(False, f"import of module '{alias.name}' is not allowed", line)
     elif isinstance(node, ast.ImportFrom):
         root = (node.module or "").split(".")[0]
-        if node.level or root not in ALLOWED_IMPORT_ROOTS:
+        if node.level or root not in allowed_imports:
             return SafetyVerdict(False, f"import from module '{node.module}' is not allowed", line)
     elif isinstance(node, ast.Name) and node.id in FORBIDDEN_NAMES:
         return SafetyVerdict(False, f"use of '{node.id}' is not allowed (file access or dynamic code)", line)
