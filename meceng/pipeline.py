@@ -28,7 +28,7 @@ import numpy as np
 import structlog
 
 from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
-from meceng.agents.catalog import Catalog, part_catalog, rigid_catalog
+from meceng.agents.catalog import Catalog, assembly_catalog, part_catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
 from meceng.agents.loop import run_agent
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_PART_CODE, DEFAULT_PART_SELECT, DEFAULT_SELECT
@@ -36,7 +36,7 @@ from meceng.agents.steps import Generation, Selection, choose_components, genera
 from meceng.agents.toolbox import Toolbox
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
-from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.eval.chain import RIGID_STAGES, StageResult, Tolerances, Verdict, evaluate_rigid
 from meceng.eval.parts import evaluate_part, minimum_maxh, part_data
 from meceng.logs import get_logger
 from meceng.tasks.base import TaskInstance, program_header
@@ -139,16 +139,18 @@ class Evaluator:
         self.tolerances = tolerances
         self.catalog = catalog
         self.part_catalog = parts or part_catalog()
+        self.assembly_catalog = assembly_catalog()
         self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
         self.references = ReferenceCache(self._run_reference)
         self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
 
     def catalog_for(self, instance: TaskInstance) -> Catalog:
-        return self.part_catalog if instance.kind == "part" else self.catalog
+        return {"part": self.part_catalog, "assembly": self.assembly_catalog}.get(instance.kind, self.catalog)
 
-    async def _execute(self, program: str, instance: TaskInstance, check: bool) -> Execution:
+    async def _execute(self, program: str, instance: TaskInstance, check: bool,
+                       files: dict[str, Path] | None = None) -> Execution:
         async with self.slots:
-            return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool)
+            return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool, files=files)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         if instance.kind == "part":
@@ -227,20 +229,33 @@ class Evaluator:
         self.references.start(instance)
 
     async def evaluate(
-        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None
+        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None,
+        files: dict[str, Path] | None = None,
     ) -> tuple[Verdict, Execution, Execution]:
-        reference_task = asyncio.ensure_future(self.references.get(instance))
+        """Run candidate and reference, grade with the level 1-2 chain. ``files``: the parts an
+        assembly loads; both programs get the same ones (the reference is then run uncached)."""
+        if files:
+            reference_task = asyncio.ensure_future(
+                self._execute(instance.reference_program, instance, check=False, files=files))
+        else:
+            reference_task = asyncio.ensure_future(self.references.get(instance))
         if code is None:
             candidate = Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
         else:
-            candidate = await self._execute(code, instance, check=True)
+            candidate = await self._execute(code, instance, check=True, files=files)
         reference = await reference_task
         verdict = evaluate_rigid(
             candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
             selected=selected, required=instance.required_components,
-            dependencies=self.catalog.dependency_map(), tolerances=self.tolerances,
+            dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
         )
         return verdict, candidate, reference
+
+
+def record_key(record: dict[str, Any]) -> str:
+    """The key of the instance a record belongs to (a part drawn for an assembly names it)."""
+    own = f"{record['slug']}@{record['seed']}"
+    return f"{record['origin']}/{own}" if record.get("origin") else own
 
 
 def _safe_name(text: str) -> str:
@@ -384,6 +399,8 @@ async def run_task(
 ) -> dict[str, Any]:
     if instance.kind == "part":
         return await run_part_task(instance, backend, evaluator, settings, writer)
+    if instance.kind == "assembly":
+        raise ValueError("assemblies are run by run_assembly_task")
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     selection = await choose_components(backend, instance, catalog, settings.select_template)
@@ -426,6 +443,64 @@ async def run_part_task(
     if instance.origin:
         record["origin"] = instance.origin
     return record
+
+
+async def run_assembly_task(
+    instance: TaskInstance, backend: Backend, evaluator: Evaluator, settings: RunSettings, writer: RunWriter,
+) -> list[dict[str, Any]]:
+    """Level 3b (paper Fig. 4-5): every part first; the assembly starts only when all passed,
+    and then both its program and the ground truth load the LLM-made parts.
+
+    Returns the part records followed by the assembly's record.
+    """
+    t0 = time.perf_counter()
+    part_records = list(await asyncio.gather(
+        *(run_part_task(part, backend, evaluator, settings, writer) for _, part in instance.parts)))
+    t_parts = time.perf_counter() - t0
+    started = all(r["overall"] for r in part_records)
+    passed = sum(1 for r in part_records if r["overall"])
+    parts_stage = StageResult("parts_overall", started, f"{passed} of {len(part_records)} parts passed")
+    part_keys = {slot: part.key for slot, part in instance.parts}
+    part_timing = {"parts_llm_s": sum(r["timing"]["llm_s"] for r in part_records),
+                   "parts_evaluation_s": sum(r["timing"]["evaluation_s"] for r in part_records),
+                   "parts_wall_s": t_parts}
+    if not started:
+        stages = (parts_stage, StageResult("mbs_started", False, "not started: a part failed"),
+                  *(StageResult(name, None, "not started") for name in RIGID_STAGES))
+        record = _assembly_record(instance, Verdict(stages), part_keys, part_timing)
+        return [*part_records, record]
+    files = {f"{slot}.npz": writer.run_dir / record["files"]["part"]
+             for (slot, _), record in zip(instance.parts, part_records, strict=True)}
+    catalog = evaluator.assembly_catalog
+    t1 = time.perf_counter()
+    selection = await choose_components(backend, instance, catalog, settings.select_template)
+    generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
+    t_llm = time.perf_counter() - t1
+    selected = selection.names if selection.infrastructure_error is None else ()
+    chain, candidate, reference = await evaluator.evaluate(instance, generation.code, selected, generation.error,
+                                                           files=files)
+    t_total = time.perf_counter() - t0
+    verdict = Verdict((parts_stage, StageResult("mbs_started", True, "all parts passed"), *chain.stages),
+                      chain.error_categories, chain.differences, chain.solution_norm, chain.infrastructure_error)
+    program_files = writer.save_programs(instance, generation.code)
+    timing = {"llm_s": t_llm, "evaluation_s": t_total - t_parts - t_llm, "total_s": t_total,
+              "mbs_evaluation_s": t_total - t_parts - t_llm, **part_timing}
+    record = task_record(instance, selection, generation, verdict, candidate, reference, timing, program_files)
+    record["parts"] = part_keys
+    return [*part_records, record]
+
+
+def _assembly_record(instance: TaskInstance, verdict: Verdict, part_keys: dict[str, str],
+                     timing: dict[str, float]) -> dict[str, Any]:
+    """The record of an assembly that was not started (a part failed): no LLM call, no run."""
+    return {
+        "id": instance.task_id, "slug": instance.slug, "name": instance.name, "level": instance.level,
+        "seed": instance.seed, "params": instance.params, "description": instance.description,
+        "required_components": list(instance.required_components), **verdict.to_json(),
+        "parts": part_keys, "timing": {"llm_s": 0.0, "evaluation_s": 0.0, "total_s": timing["parts_wall_s"],
+                                       **timing},
+        "tokens": {"prompt": 0, "completion": 0}, "evaluator": EVALUATOR_VERSION,
+    }
 
 
 async def _run_agent_task(
@@ -492,9 +567,10 @@ async def run_benchmark(
     if not (run_dir / "settings.json").exists():
         _write_atomic(run_dir / "settings.json", json.dumps(settings.to_json(), indent=1))
     # the last record of a task wins; tasks that failed for infrastructure reasons are tried again
-    latest = {f"{r['slug']}@{r['seed']}": r for r in writer.finished}
+    latest = {record_key(r): r for r in writer.finished}
     done = {k: r for k, r in latest.items() if r.get("first_failure") != "infrastructure"}
-    records: list[dict[str, Any]] = list(done.values())
+    # parts of an unfinished assembly are made again with it
+    records: list[dict[str, Any]] = [r for r in done.values() if not r.get("origin") or r["origin"] in done]
     todo = [i for i in instances if i.key not in done]
     own_backend = backend is None
     cache = ResponseCache(run_dir / "responses.jsonl")
@@ -519,15 +595,20 @@ async def run_benchmark(
         async def one(instance: TaskInstance) -> None:
             async with window:
                 try:
-                    record = await run_task(instance, backend, catalog, evaluator, settings, writer)
+                    if instance.kind == "assembly":
+                        produced = await run_assembly_task(instance, backend, evaluator, settings, writer)
+                    else:
+                        produced = [await run_task(instance, backend, catalog, evaluator, settings, writer)]
                 except Exception as exc:
                     log.error("task failed", task=instance.key, error=str(exc))
-                    record = _failed_record(instance, exc)
-            writer.append(record)
-            records.append(record)
+                    produced = [_failed_record(instance, exc)]
+            for record in produced:
+                writer.append(record)
+                records.append(record)
+            record = produced[-1]
             log.info("task done", task=instance.key, overall=record["overall"],
                      first_failure=record["first_failure"])
-            advance(record["overall"], int(record.get("tokens", {}).get("completion", 0)))
+            advance(record["overall"], sum(int(r.get("tokens", {}).get("completion", 0)) for r in produced))
 
         try:
             await asyncio.gather(*(one(i) for i in todo))
@@ -540,7 +621,8 @@ async def run_benchmark(
             else:
                 cache.close()
     order = {inst.key: k for k, inst in enumerate(instances)}
-    records.sort(key=lambda r: order.get(f"{r['slug']}@{r['seed']}", 0))
+    # a part drawn for an assembly sits just before its assembly
+    records.sort(key=lambda r: (order.get(r.get("origin") or record_key(r), 0), 0 if r.get("origin") else 1))
     extra = {"llm_calls": {"answered_from_cache": cache.hits, "requested": cache.misses},
              "resumed_tasks": len(done)}
     path = writer.finish(settings, records, started, time.perf_counter() - t0, extra)

@@ -92,3 +92,11 @@ def part_catalog() -> Catalog:
     from meceng.agents.components_part import COMPONENTS
 
     return Catalog(COMPONENTS)
+
+
+def assembly_catalog() -> Catalog:
+    """Level 3b: the rigid components plus flexible bodies, interface joints and loads."""
+    from meceng.agents.components_flexible import COMPONENTS as FLEXIBLE
+    from meceng.agents.components_rigid import COMPONENTS as RIGID
+
+    return Catalog(RIGID + FLEXIBLE)

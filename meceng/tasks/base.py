@@ -104,6 +104,7 @@ class TaskInstance:
     kind: str = "rigid"  # "rigid" (levels 1, 2), "part" (3a), "assembly" (3b)
     part: Any = None  # PartSpec of a part instance
     origin: str = ""  # key of the assembly instance a part was drawn for
+    parts: tuple[tuple[str, TaskInstance], ...] = ()  # an assembly's (slot, part instance)
 
     @property
     def key(self) -> str:
@@ -124,6 +125,7 @@ class TaskInstance:
             **({"sim": {"end_time": self.sim.end_time, "steps": self.sim.steps}} if self.sim else {}),
             **({"part": self.part.to_json()} if self.part is not None else {}),
             **({"origin": self.origin} if self.origin else {}),
+            **({"parts": {slot: part.key for slot, part in self.parts}} if self.parts else {}),
         }
 
 

@@ -63,6 +63,7 @@ class PartSpec:
     material: Material
     maxh: float
     n_modes: int = N_MODES
+    geometry_text: str = ""  # the description without the meshing instructions (for an assembly's text)
 
     def to_json(self) -> dict[str, Any]:
         return {"interfaces": list(self.interfaces), "material": self.material.__dict__, "maxh": self.maxh,
@@ -120,7 +121,7 @@ class PartModel:
             f"FEMinterface with meshOrder=1 and the interfaces [{names}] as boundary names, in this order, and "
             f"compute Hurty-Craig-Bampton modes with {N_MODES} eigenmodes using these interfaces (RBE2)."
         )
-        spec = PartSpec(self.interfaces, self.material, maxh)
+        spec = PartSpec(self.interfaces, self.material, maxh, geometry_text=f"{text} {self.material.sentence()}")
         return TaskInstance(
             task_id=self.id, slug=self.slug, name=self.name, level=self.level, seed=seed, params=values,
             description=description, required_components=self.components, sim=None,

@@ -8,6 +8,7 @@ import pkgutil
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
+from meceng.tasks.assembly_base import AssemblyModel
 from meceng.tasks.base import TaskInstance, TaskModel
 from meceng.tasks.part_base import PartModel
 
@@ -15,7 +16,7 @@ _NOT_TASKS = {"base", "registry", "part_base", "assembly_base"}
 _PACKAGES = ("meceng.tasks", "meceng.tasks.parts", "meceng.tasks.assemblies")
 
 #: Any kind of task model: they share id, name, level, slug and ``instance(seed)``.
-AnyModel = TaskModel | PartModel
+AnyModel = TaskModel | PartModel | AssemblyModel
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,7 @@ def discover() -> TaskRegistry:
                 continue
             module = importlib.import_module(f"{package_name}.{info.name}")
             task = getattr(module, "TASK", None)
-            if isinstance(task, TaskModel | PartModel):
+            if isinstance(task, TaskModel | PartModel | AssemblyModel):
                 models.append(task)
     return TaskRegistry(tuple(sorted(models, key=lambda m: m.id)))
 

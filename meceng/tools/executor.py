@@ -19,6 +19,7 @@ import signal
 import sys
 import tempfile
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -157,11 +158,13 @@ async def execute(
     scratch_root: Path | None = None,
     check: bool = True,
     pool: WarmPool | None = None,
+    files: Mapping[str, Path] | None = None,
 ) -> Execution:
     """Statically check, then run ``program`` with ``sim_block`` as its solver block.
 
     With a ``pool`` the child is forked from the warm fork server, otherwise a cold interpreter
-    is started; both get the same isolation.
+    is started; both get the same isolation. ``files`` are put into the program's working
+    directory under the given names (the saved parts an assembly loads).
     """
     limits = limits or ExecutionLimits()
     if check:
@@ -171,6 +174,9 @@ async def execute(
             return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
     scratch = Path(tempfile.mkdtemp(prefix="meceng-", dir=scratch_root))
     try:
+        for name, source in (files or {}).items():
+            # a copy, not a link: the program may write in its directory, the saved part stays intact
+            shutil.copyfile(source, scratch / Path(name).name)
         if pool is not None:
             return await _run_warm(scratch, program, sim_block, limits, pool)
         return await _run_in(scratch, program, sim_block, limits)

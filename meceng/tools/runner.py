@@ -166,8 +166,18 @@ def to_jsonable(value: Any) -> Any:
         return str(value)
 
 
+#: Reduced FE matrices and mode bases of flexible bodies: both programs load the same part, and
+#: the matrices would make the graph annotations megabytes large; they are left out.
+REDUCED_FE_KEYS = frozenset({
+    "massMatrixReduced", "stiffnessMatrixReduced", "dampingMatrixReduced", "modeBasis", "outputVariableModeBasis",
+    "referencePositions", "mPsiTildePsi", "mPsiTildePsiTilde", "mPhitTPsi", "mPhitTPsiTilde", "mXRefTildePsi",
+    "mXRefTildePsiTilde", "tempUserFunctionForce",
+})
+
+
 def capture_items(mbs: Any, api: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
-    """Every item of the system as a plain dict, without visualization ('V*') entries."""
+    """Every item of the system as a plain dict, without visualization ('V*') entries and
+    without the reduced FE matrices of flexible bodies."""
     items: dict[str, list[dict[str, Any]]] = {}
     data = mbs.systemData
     for kind in ("Node", "Object", "Marker", "Load", "Sensor"):
@@ -176,7 +186,8 @@ def capture_items(mbs: Any, api: dict[str, Any]) -> dict[str, list[dict[str, Any
         entries = []
         for i in range(count):
             raw = getter(mbs, i)
-            entries.append({k: to_jsonable(v) for k, v in raw.items() if not k.startswith("V")})
+            entries.append({k: to_jsonable(v) for k, v in raw.items()
+                            if not k.startswith("V") and k not in REDUCED_FE_KEYS})
         items[kind.lower() + "s"] = entries
     return items
 
