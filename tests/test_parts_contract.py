@@ -54,7 +54,7 @@ def test_part_prompts_carry_description_menu_and_context() -> None:
 @pytest.mark.parametrize("model", PARTS, ids=lambda m: m.slug)
 def test_part_model_contract(model: PartModel) -> None:
     assert 51 <= model.id <= 72 and model.level == "3a" and model.slug == slugify(model.name)
-    assert FEM_NAMES <= set(model.components) and set(model.components) <= set(part_catalog().names)
+    assert set(model.components) >= FEM_NAMES and set(model.components) <= set(part_catalog().names)
     assert model.interfaces and len(set(model.interfaces)) == len(model.interfaces)
     assert set(model.master) <= {p.name for p in model.params}
     a, b, c = model.instance(3), model.instance(3), model.instance(4)
