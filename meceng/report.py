@@ -20,12 +20,15 @@ import matplotlib.pyplot as plt
 
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.report import (
+    FLEXIBLE_COLUMNS,
     RIGID_COLUMNS,
     Rate,
     Run,
     component_series,
     difficulty,
     error_category_table,
+    flexible_table,
+    flexible_timing_table,
     load_runs,
     series,
     stage_table,
@@ -193,6 +196,21 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
             md, ht = _table(["model", "release", "size (B)", "overall (no thinking)"],
                             [[m, r, "" if s is None else f"{s:g}", f"{100 * v:.1f}"] for m, r, s, v in points])
             sections.insert(1, ("Success vs release date (Fig. 7)", md, ht, "release.png"))
+
+    flexible = flexible_table(runs)
+    if flexible:
+        headers = ["run", "parts", "assemblies", *[label for _, _, label in FLEXIBLE_COLUMNS]]
+        rows = [[r["run"], str(r["parts"]), str(r["assemblies"]),
+                 *[r[label].text() for _, _, label in FLEXIBLE_COLUMNS]] for r in flexible]
+        md, ht = _table(headers, rows)
+        sections.append(("Flexible parts and assemblies, levels 3a/3b (Table 6)", md, ht, None))
+        timing_rows = [[r["run"], f"{r['llm_min']:.1f}", f"{r['parts_eval_min']:.1f}", f"{r['mbs_eval_min']:.2f}",
+                        f"{r['generated_tokens_k']:.1f}",
+                        "–" if r["context_p95"] is None else f"{r['context_p95']:.0f}", str(r["batch_size"])]
+                       for r in flexible_timing_table(runs)]
+        md, ht = _table(["run", "LLM (min)", "parts eval. (min)", "MBS eval. (min)", "gen. tokens (k)",
+                         "context used (P95)", "batch size"], timing_rows)
+        sections.append(("Level 3 time and tokens (Table 7)", md, ht, None))
 
     agent_rows = []
     for run in runs:

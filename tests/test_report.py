@@ -84,3 +84,39 @@ async def test_report_numbers_match_run_records(tmp_path: Path) -> None:
     markdown = (out / "report.md").read_text()
     assert "| weak:1b T=0.7 think=False CI1/MBS3 | 4 |" in markdown
     assert "50.0 [15–85]" in markdown  # 2 of 4 with its Wilson interval
+
+
+def test_level3_tables_count_parts_and_assemblies_apart(tmp_path) -> None:
+    import json as _json
+
+    from meceng.eval.report import flexible_table, flexible_timing_table, load_runs
+
+    def part(ok: bool, origin: str) -> dict:
+        return {"level": "3a", "slug": "p", "seed": 0, "origin": origin, "overall": ok, "first_failure": None,
+                "stages": [{"name": "choose_part_components", "passed": True},
+                           {"name": "mesh_match", "passed": ok}],
+                "timing": {"llm_s": 60.0, "evaluation_s": 30.0}, "tokens": {"completion": 500},
+                "generation": {"meta": {"context_used": 1000}}}
+
+    def assembly(started: bool, ok: bool) -> dict:
+        return {"level": "3b", "slug": "a", "seed": 0, "overall": ok, "first_failure": None,
+                "stages": [{"name": "parts_overall", "passed": started}, {"name": "mbs_started", "passed": started},
+                           {"name": "choose_components", "passed": started}],
+                "timing": {"llm_s": 60.0 if started else 0.0, "evaluation_s": 6.0, "mbs_evaluation_s": 6.0},
+                "tokens": {"completion": 1000 if started else 0}}
+
+    tasks = [part(True, "a@0"), part(True, "a@0"), assembly(True, True), part(False, "a@1"), assembly(False, False)]
+    run_dir = tmp_path / "run"
+    run_dir.mkdir()
+    (run_dir / "run.json").write_text(_json.dumps({"settings": {"llm": {"model": "m", "temperature": 0, "think": False,
+                                                                       "batch_size": 8},
+                                                               "prompt": {"select_template": "CI1",
+                                                                          "code_template": "MBS1"}},
+                                                  "summary": {}, "tasks": tasks}))
+    runs = load_runs([run_dir])
+    row = flexible_table(runs)[0]
+    assert (row["parts"], row["assemblies"]) == (3, 2)
+    assert row["parts overall"].passed == 2 and row["MBS started"].passed == 1 and row["overall"].passed == 1
+    timing = flexible_timing_table(runs)[0]
+    assert timing["parts_eval_min"] == 1.5 and timing["mbs_eval_min"] == 0.2 and timing["batch_size"] == 8
+    assert timing["generated_tokens_k"] == 2.5 and timing["context_p95"] == 1000

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from meceng.eval.categories import CATEGORIES
 
 RIGID_COLUMNS = (
@@ -92,9 +94,20 @@ class Run:
         return (f"{self.model} T={self.temperature:g} think={self.think} "
                 f"{self.select_template}/{self.code_template}")
 
-    def graded(self) -> list[dict[str, Any]]:
-        """Task records that say something about the model (infrastructure failures left out)."""
-        return [t for t in self.tasks if t.get("first_failure") != "infrastructure"]
+    def graded(self, levels: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
+        """Task records that say something about the model (infrastructure failures left out),
+        of the given levels only if ``levels`` is set."""
+        return [t for t in self.tasks if t.get("first_failure") != "infrastructure"
+                and (levels is None or str(t.get("level")) in levels)]
+
+    @property
+    def rigid_levels(self) -> tuple[str, ...] | None:
+        """Levels 1-2 when the run has rigid tasks (Table 2 is about them), else everything."""
+        return ("1", "2") if any(str(t.get("level")) in ("1", "2") for t in self.tasks) else None
+
+    @property
+    def flexible_only(self) -> bool:
+        return bool(self.tasks) and all(str(t.get("level")) in ("3a", "3b") for t in self.tasks)
 
 
 def load_runs(paths: list[Path]) -> list[Run]:
@@ -130,12 +143,69 @@ def stage_table(runs: list[Run]) -> list[dict[str, Any]]:
     rows = []
     labels = [run.label for run in runs]
     for run in runs:
-        tasks = run.graded()
-        label = run.label if labels.count(run.label) == 1 else f"{run.label} ({run.path.parent.name})"
+        if run.flexible_only:
+            continue  # Table 6 and 7 describe it
+        tasks = run.graded(run.rigid_levels)
+        label = _label(run, labels)
         rows.append({"run": label, "model": run.model, "n": len(tasks),
-                     "infrastructure_failures": len(run.tasks) - len(tasks),
+                     "infrastructure_failures": sum(1 for t in run.tasks if t.get("first_failure") == "infrastructure"),
                      **{key: stage_rate(tasks, key) for key, _ in RIGID_COLUMNS}})
     return sorted(rows, key=lambda r: -(r["overall"].value or 0.0))
+
+
+def _label(run: Run, labels: list[str]) -> str:
+    return run.label if labels.count(run.label) == 1 else f"{run.label} ({run.path.parent.name})"
+
+
+#: Table 6: part metrics over every part record, MBS metrics over the assemblies.
+FLEXIBLE_COLUMNS = (
+    ("3a", "choose_part_components", "part comp."),
+    ("3a", "mesh_match", "mesh"),
+    ("3a", "overall", "parts overall"),
+    ("3b", "mbs_started", "MBS started"),
+    ("3b", "choose_components", "comp."),
+    ("3b", "graph_content_match", "graph"),
+    ("3b", "overall", "overall"),
+)
+
+
+def flexible_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Table 6 (runs with level 3 records), sorted by parts overall like the paper."""
+    rows = []
+    labels = [run.label for run in runs]
+    for run in runs:
+        parts, assemblies = run.graded(("3a",)), run.graded(("3b",))
+        if not parts and not assemblies:
+            continue
+        rows.append({"run": _label(run, labels), "model": run.model, "parts": len(parts),
+                     "assemblies": len(assemblies),
+                     **{label: stage_rate(parts if level == "3a" else assemblies, stage)
+                        for level, stage, label in FLEXIBLE_COLUMNS}})
+    return sorted(rows, key=lambda r: -(r["parts overall"].value or 0.0))
+
+
+def flexible_timing_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Table 7: LLM time, part and MBS evaluation time, generated tokens, P95 context, batch size."""
+    rows = []
+    labels = [run.label for run in runs]
+    for run in runs:
+        tasks = run.graded(("3a", "3b"))
+        if not tasks:
+            continue
+        contexts = [m.get("context_used", 0) for t in tasks for m in
+                    (t.get("selection", {}).get("meta"), t.get("generation", {}).get("meta")) if m]
+        rows.append({
+            "run": _label(run, labels), "model": run.model,
+            "llm_min": sum(t.get("timing", {}).get("llm_s", 0.0) for t in tasks) / 60,
+            "parts_eval_min": sum(t.get("timing", {}).get("evaluation_s", 0.0) for t in tasks
+                                  if t.get("level") == "3a") / 60,
+            "mbs_eval_min": sum(t.get("timing", {}).get("mbs_evaluation_s", 0.0) for t in tasks
+                                if t.get("level") == "3b") / 60,
+            "generated_tokens_k": sum(t.get("tokens", {}).get("completion", 0) for t in tasks) / 1000,
+            "context_p95": float(np.percentile(contexts, 95)) if contexts else None,
+            "batch_size": run.settings["llm"].get("batch_size"),
+        })
+    return rows
 
 
 def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
