@@ -30,7 +30,7 @@ import structlog
 from meceng.agents.cache import CachedBackend, ResponseCache, read_jsonl
 from meceng.agents.catalog import Catalog, assembly_catalog, part_catalog, rigid_catalog
 from meceng.agents.llm import Backend, LLMSettings, make_backend
-from meceng.agents.loop import run_agent
+from meceng.agents.loop import AgentResult, run_agent
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_PART_CODE, DEFAULT_PART_SELECT, DEFAULT_SELECT
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
 from meceng.agents.toolbox import Toolbox
@@ -425,11 +425,21 @@ async def run_part_task(
     evaluator.prefetch(instance)
     catalog = evaluator.part_catalog
     selection = await choose_components(backend, instance, catalog, settings.part_select_template)
-    generation = await generate_code(backend, instance, catalog, selection, settings.part_code_template)
-    t_llm = time.perf_counter() - t0
     selected = selection.names if selection.infrastructure_error is None else ()
+    agent = None
+    if settings.agent == "loop":
+        toolbox = Toolbox(instance, catalog, evaluator.part_limits, evaluator.pool)
+        agent = await run_agent(backend, instance, catalog, selection, toolbox, template=settings.part_code_template,
+                                max_rounds=settings.max_rounds, token_budget=settings.token_budget)
+        generation = _agent_generation(agent)
+    else:
+        generation = await generate_code(backend, instance, catalog, selection, settings.part_code_template)
+    t_llm = time.perf_counter() - t0
     verdict, candidate, reference, facts = await evaluator.evaluate_part(
         instance, generation.code, selected, generation.error, save_to=writer.part_path(instance))
+    first = verdict
+    if agent is not None and agent.first_code != agent.final_code:
+        first, _, _, _ = await evaluator.evaluate_part(instance, agent.first_code, selected, agent.error)
     t_total = time.perf_counter() - t0
     files = writer.save_programs(instance, generation.code)
     if "saved_part" in facts:
@@ -440,6 +450,9 @@ async def run_part_task(
     record = task_record(instance, selection, generation, verdict, candidate, reference, timing, files)
     record["part"] = {**facts, "spec": instance.part.to_json(), "reference_times": reference.part_times,
                       "reference_nodes": (reference.part or {}).get("nodes")}
+    if agent is not None:
+        record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
+                           "first_stages": [s.to_json() for s in first.stages]}
     if instance.origin:
         record["origin"] = instance.origin
     return record
@@ -474,11 +487,21 @@ async def run_assembly_task(
     catalog = evaluator.assembly_catalog
     t1 = time.perf_counter()
     selection = await choose_components(backend, instance, catalog, settings.select_template)
-    generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
+    agent = None
+    if settings.agent == "loop":
+        toolbox = Toolbox(instance, catalog, evaluator.limits, evaluator.pool, files=files)
+        agent = await run_agent(backend, instance, catalog, selection, toolbox, template=settings.code_template,
+                                max_rounds=settings.max_rounds, token_budget=settings.token_budget)
+        generation = _agent_generation(agent)
+    else:
+        generation = await generate_code(backend, instance, catalog, selection, settings.code_template)
     t_llm = time.perf_counter() - t1
     selected = selection.names if selection.infrastructure_error is None else ()
     chain, candidate, reference = await evaluator.evaluate(instance, generation.code, selected, generation.error,
                                                            files=files)
+    first = chain
+    if agent is not None and agent.first_code != agent.final_code:
+        first, _, _ = await evaluator.evaluate(instance, agent.first_code, selected, agent.error, files=files)
     t_total = time.perf_counter() - t0
     verdict = Verdict((parts_stage, StageResult("mbs_started", True, "all parts passed"), *chain.stages),
                       chain.error_categories, chain.differences, chain.solution_norm, chain.infrastructure_error)
@@ -487,6 +510,9 @@ async def run_assembly_task(
               "mbs_evaluation_s": t_total - t_parts - t_llm, **part_timing}
     record = task_record(instance, selection, generation, verdict, candidate, reference, timing, program_files)
     record["parts"] = part_keys
+    if agent is not None:
+        record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
+                           "first_stages": [s.to_json() for s in first.stages]}
     return [*part_records, record]
 
 
@@ -518,10 +544,7 @@ async def _run_agent_task(
         first = verdict
     else:
         first, _, _ = await evaluator.evaluate(instance, agent.first_code, selected, agent.error)
-    generation = Generation(prompt=agent.transcript[0]["content"], answer=agent.transcript[-1].get("content", ""),
-                            code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
-                            meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
-                                  "context_used": agent.prompt_tokens + agent.completion_tokens})
+    generation = _agent_generation(agent)
     t_total = time.perf_counter() - t0
     files = writer.save_programs(instance, agent.final_code)
     record = task_record(instance, selection, generation, verdict, candidate, reference,
@@ -529,6 +552,14 @@ async def _run_agent_task(
     record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
                        "first_stages": [s.to_json() for s in first.stages]}
     return record
+
+
+def _agent_generation(agent: AgentResult) -> Generation:
+    """The agent's final answer in the shape of the two-step pipeline's generation record."""
+    return Generation(prompt=agent.transcript[0]["content"], answer=agent.transcript[-1].get("content", ""),
+                      code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
+                      meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
+                            "context_used": agent.prompt_tokens + agent.completion_tokens})
 
 
 def _failed_record(instance: TaskInstance, exc: BaseException) -> dict[str, Any]:

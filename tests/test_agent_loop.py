@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.catalog import rigid_catalog
+from meceng.agents.catalog import part_catalog, rigid_catalog
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox
@@ -170,3 +171,53 @@ async def test_self_check_energy_is_the_programs_own() -> None:
     report = json.loads(await Toolbox(oscillator.instance(1), rigid_catalog()).call("self_check", {"code": damped}))
     assert abs(report["energy"]["start"] - 0.5 * values["stiffness"] * values["displacement"] ** 2) < 1e-9
     assert report["energy"]["relative_change"] < -0.5
+
+
+async def test_part_agent_repairs_an_interface_after_meshing(tmp_path: Path) -> None:
+    """Level 3a: the agent meshes a part whose right face is unnamed, reads the tool's report, fixes it."""
+    part = default_registry().get("flexible_beam_part").instance(0)
+    wrong = part.reference_program.replace("shape.faces.Max(X).name = 'right'", "shape.faces.Max(X).name = 'end'")
+    wrong = wrong.replace("['left', 'right']", "['left', 'end']")
+
+    def responder(body):
+        messages = body["messages"]
+        if "<components>" in messages[0]["content"]:
+            return 200, chat_reply(gold_selection(part.required_components)), {}
+        assert {t["function"]["name"] for t in body["tools"]} == {"mesh_part", "list_components", "component_docs"}
+        results = [m for m in messages if m["role"] == "tool"]
+        if not results:
+            return 200, tool_call("mesh_part", code=wrong), {}
+        report = json.loads(results[-1]["content"])
+        assert set(report["interfaces"]) == {"left", "end"}  # what it made, so it can see the mistake
+        return 200, chat_reply(gold_code(part.reference_program)), {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="agent:1b", backend="ollama", hosts=(server.url,))
+        settings = RunSettings(llm=llm, levels=("3a",), only=("flexible_beam_part",), variations=1, out=tmp_path,
+                               run_name="part-agent", progress=False, agent="loop", max_rounds=3)
+        run = json.loads((await run_benchmark(settings)).read_text())
+    task = run["tasks"][0]
+    assert task["overall"] is True and task["agent"]["first_overall"] is False
+    assert task["agent"]["first_failure"] == "interface_name_match"
+    assert task["agent"]["tool_calls"] == {"mesh_part": 1} and run["summary"]["agent"]["uplift"] == 1.0
+
+
+async def test_mesh_part_reports_the_agents_part_never_the_ground_truth() -> None:
+    part = default_registry().get("flexible_beam_part").instance(0)
+    p = part.params
+    other = re.sub(r"^beam_length = .*$", "beam_length = 0.3", part.reference_program, flags=re.M)
+    other = other.replace("density=7850.0", "density=2700.0")
+    report = json.loads(await Toolbox(part, part_catalog()).call("mesh_part", {"code": other}))
+    assert report["error"] is None and report["stage"] == "reduced"
+    volume = 0.3 * p["beam_width"] * p["beam_height"]
+    assert report["volume"] == pytest.approx(volume, rel=1e-9)
+    assert report["mass"] == pytest.approx(2700.0 * volume, rel=1e-9)
+    assert report["bounding_box"][1][0] == pytest.approx(0.3)
+    right = report["interfaces"]["right"]
+    assert right["area"] == pytest.approx(p["beam_width"] * p["beam_height"], rel=1e-9)
+    assert right["centre"] == pytest.approx([0.3, 0.0, 0.0], abs=1e-9)
+    assert len(report["eigenfrequencies_hz"]) >= 6
+    flagged = json.loads(await Toolbox(part, part_catalog()).call("mesh_part", {
+        "code": other.replace(f"maxh={part.part.maxh!r}", "maxh=h")}))
+    assert flagged["stage"] == "flagged"
+    assert "simulate" in json.loads(await Toolbox(part, part_catalog()).call("simulate", {"code": other}))["error"]

@@ -28,6 +28,14 @@ built and how it moved, `self_check(code)` looks for problems, `list_components(
 the final program in a single ```python code block without calling a tool.
 """
 
+PART_AGENT_NOTE = """
+You can call tools before you answer: `mesh_part(code)` builds, meshes and reduces a complete part
+program and reports its volume, mass, bounding box, interfaces (area and centre) and first
+eigenfrequencies; `list_components()` and `component_docs(names)` give documentation. Check the
+part against the description, repair it if needed, and then give the final program in a single
+```python code block without calling a tool.
+"""
+
 
 @dataclass
 class AgentResult:
@@ -81,7 +89,8 @@ async def run_agent(
     max_rounds: int = 6,
     token_budget: int = 30000,
 ) -> AgentResult:
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + AGENT_NOTE
+    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
+    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + note
     messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None

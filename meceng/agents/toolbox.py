@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import json
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -18,6 +19,7 @@ import numpy as np
 from meceng.agents.catalog import Catalog
 from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
 TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
@@ -49,6 +51,15 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
                        "required": ["names"]},
     },
 )
+
+MESH_PART_SCHEMA: dict[str, Any] = {
+    "name": "mesh_part",
+    "description": ("Build, mesh and reduce a complete part program (as you would answer it) and report what "
+                    "it made: stage, error, volume, mass, bounding box, every interface with its area and centre, "
+                    "the first eigenfrequencies and the number of nodes. The program must hard-code maxh."),
+    "parameters": {"type": "object", "properties": {"code": {"type": "string", "description": "the part program"}},
+                   "required": ["code"]},
+}
 
 SAMPLES = 5
 MAX_TEXT = 1500
@@ -101,15 +112,23 @@ class Toolbox:
     limits: ExecutionLimits = field(default_factory=ExecutionLimits)
     pool: WarmPool | None = None
     calls: Counter[str] = field(default_factory=Counter)
+    files: dict[str, Path] | None = None  # the saved parts an assembly's program loads
 
     @property
     def schemas(self) -> tuple[dict[str, Any], ...]:
+        """A part is meshed, not simulated: it gets ``mesh_part`` instead of the simulator tools."""
+        if self.instance.kind == "part":
+            return (MESH_PART_SCHEMA, *(t for t in TOOL_SCHEMAS if t["name"] in ("list_components", "component_docs")))
         return TOOL_SCHEMAS
 
     async def call(self, name: str, arguments: dict[str, Any]) -> str:
         """Run a tool; unknown tools and bad arguments are answered, never raised."""
         self.calls[name] += 1
         try:
+            if name not in {t["name"] for t in self.schemas}:
+                raise LookupError(name)
+            if name == "mesh_part":
+                return json.dumps(await self.mesh_part(str(arguments["code"])))
             if name == "simulate":
                 return json.dumps(await self.simulate(str(arguments["code"])))
             if name == "self_check":
@@ -125,17 +144,46 @@ class Toolbox:
                 return text + (f"\n\nUnknown components: {', '.join(unknown)}" if unknown else "")
         except KeyError as exc:
             return json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"})
-        return json.dumps({"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in TOOL_SCHEMAS)}"})
+        except LookupError:
+            pass
+        return json.dumps({"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in self.schemas)}"})
+
+    async def mesh_part(self, code: str) -> dict[str, Any]:
+        """The part program's own part: nothing of the ground truth (the finest allowed maxh is
+        half the size the description states)."""
+        stated = self.instance.part.maxh
+        check = check_mesh_size(code, stated / 2)
+        if check.code is None:
+            return {"stage": "flagged", "error": check.error}
+        limits = replace(self.limits, mode="part", n_modes=self.instance.part.n_modes,
+                         timeout_s=max(self.limits.timeout_s, 300.0))
+        run = await execute(check.code, "", limits, pool=self.pool)
+        report: dict[str, Any] = {"stage": run.stage, "error": _trim(run.error)}
+        if check.raised:
+            report["note"] = f"maxh below {stated / 2:g} m was raised to {stated / 2:g} m"
+        part = run.part
+        if part is not None:
+            geometry = part.get("geometry") or {}
+            report.update(
+                volume=geometry.get("volume"), mass=part["mass"], bounding_box=part.get("bounding_box"),
+                material={"youngsModulus": part["youngs_modulus"], "poissonsRatio": part["poissons_ratio"],
+                          "density": part["density"]},
+                interfaces=geometry.get("interfaces") or {n: None for n in part["interfaces"]},
+                eigenfrequencies_hz=[round(f, 4) for f in part["eigenfrequencies"][:8]], nodes=part["nodes"])
+        return report
 
     async def _run(self, code: str, energy: bool = False) -> Execution:
         # only the time span of the description; none of the ground truth's solver extras
-        block = SimSettings(self.instance.sim.end_time, self.instance.sim.steps).block()
+        sim = self.instance.sim
+        if sim is None:
+            raise LookupError("no simulation for a part")
+        block = SimSettings(sim.end_time, sim.steps).block()
         if energy:
             solve = "mbs.SolveDynamic(simulationSettings)"
             block = ENERGY_CODE + block.replace(solve, (
                 "_e0 = _meceng_energy(mbs)\n" + solve + "\n"
                 f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
-        return await execute(code, block, self.limits, pool=self.pool)
+        return await execute(code, block, self.limits, pool=self.pool, files=self.files)
 
     async def simulate(self, code: str) -> dict[str, Any]:
         run = await self._run(code)

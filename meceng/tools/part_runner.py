@@ -53,6 +53,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         times["import_s"] += time.perf_counter() - t
         state.update(fem=fem, material=(float(youngsModulus), float(poissonsRatio), float(density)),
                      interfaces=tuple(kwargs.get("boundaryNamesList") or ()), stage="meshed")
+        state["geometry"] = _mesh_geometry(mesh, state["interfaces"])
         stage_log.write("meshed\n")
         return out
 
@@ -113,6 +114,24 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
     return 0
 
 
+def _mesh_geometry(mesh: Any, names: tuple[str, ...]) -> dict[str, Any]:
+    """Volume of the mesh, and area and centre of every named interface (for the agent's tool)."""
+    try:
+        import ngsolve as ngs
+
+        one = ngs.CoefficientFunction(1.0)
+        interfaces = {}
+        for name in names:
+            region = mesh.Boundaries(str(name))
+            area = float(ngs.Integrate(one, mesh, ngs.BND, definedon=region))
+            centre = ([float(ngs.Integrate(c, mesh, ngs.BND, definedon=region)) / area for c in (ngs.x, ngs.y, ngs.z)]
+                      if area > 0 else None)
+            interfaces[str(name)] = {"area": area, "centre": centre}
+        return {"volume": float(ngs.Integrate(one, mesh)), "interfaces": interfaces}
+    except Exception as exc:  # not an ngsolve mesh: the metrics do not need this
+        return {"error": f"{type(exc).__name__}: {exc}"}
+
+
 def _describe_part(fem: Any, state: dict[str, Any], workdir: Path, token: str) -> dict[str, Any]:
     triangles = np.asarray(fem.GetSurfaceTriangles(), dtype=np.int64)
     nodes = np.asarray(fem.GetNodePositionsAsArray(), dtype=float)
@@ -126,4 +145,6 @@ def _describe_part(fem: Any, state: dict[str, Any], workdir: Path, token: str) -
     youngs, poisson, density = state["material"]
     return {"interfaces": list(state["interfaces"]), "youngs_modulus": youngs, "poissons_ratio": poisson,
             "density": density, "mass": float(fem.GetRigidBodyInertia().Mass()), "eigenfrequencies": frequencies,
-            "modes_requested": state["modes_requested"], "nodes": len(nodes), "surface_triangles": len(triangles)}
+            "modes_requested": state["modes_requested"], "nodes": len(nodes), "surface_triangles": len(triangles),
+            "bounding_box": [nodes.min(axis=0).tolist(), nodes.max(axis=0).tolist()],
+            "geometry": state.get("geometry") or {}}
