@@ -5,7 +5,8 @@ run folder named from its settings. A point whose run.json exists is skipped, a 
 folder holds an unfinished journal is resumed, so rerunning a sweep only does missing work.
 
 Token limits follow the paper (section 2.3): context 4096 and answer 2048 tokens, times 1.5 for
-models that reason even with thinking off, times 3.75 with thinking on.
+models that reason even with thinking off, times 3.75 with thinking on; level 3 (parts and
+assemblies, longer descriptions) starts from a 6144-token context (section 4.2).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 
 BASE_CTX = 4096
 BASE_PREDICT = 2048
+FLEXIBLE_CTX = 6144
 REASONING_FACTOR = 1.5
 THINKING_FACTOR = 3.75
 
@@ -65,13 +67,14 @@ class GridPoint:
     select_template: str
     code_template: str
 
-    def token_limits(self) -> tuple[int, int]:
+    def token_limits(self, levels: tuple[str, ...] = ("1", "2")) -> tuple[int, int]:
         factor = THINKING_FACTOR if self.think not in (False, None) else (
             REASONING_FACTOR if self.model.reasons_anyway else 1.0)
-        return int(BASE_CTX * factor), int(BASE_PREDICT * factor)
+        base = FLEXIBLE_CTX if any(level in ("3a", "3b") for level in levels) else BASE_CTX
+        return int(base * factor), int(BASE_PREDICT * factor)
 
-    def llm(self, llm_timeout_s: float = 600.0) -> LLMSettings:
-        num_ctx, num_predict = self.token_limits()
+    def llm(self, llm_timeout_s: float = 600.0, levels: tuple[str, ...] = ("1", "2")) -> LLMSettings:
+        num_ctx, num_predict = self.token_limits(levels)
         backend = "gold" if self.model.name == "gold" else self.model.backend
         return LLMSettings(model=self.model.name, backend=backend, hosts=self.model.hosts,
                            temperature=self.temperature, think=self.think, num_ctx=num_ctx,

@@ -103,7 +103,7 @@ def main(argv: list[str] | None = None) -> int:
         import os
 
         settings = RunSettings(
-            llm=point.llm(), levels=spec.levels, only=spec.only, variations=spec.variations, seed=spec.seed,
+            llm=point.llm(levels=spec.levels), levels=spec.levels, only=spec.only, variations=spec.variations, seed=spec.seed,
             out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
             exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
             code_template=point.code_template, progress=not args.no_progress,

@@ -45,5 +45,7 @@ def test_specs_load_and_token_limits_follow_the_paper() -> None:
     assert plain.token_limits() == (4096, 2048)
     assert reasoning.token_limits() == (6144, 3072)
     assert thinking.token_limits() == (15360, 7680)
+    assert plain.token_limits(("3a", "3b")) == (6144, 2048)
+    assert plain.llm(levels=("3b",)).num_ctx == 6144
     spec = SweepSpec(models=(ModelSpec("m:1b"),), variations=3)
     assert plain.name(spec) != thinking.name(spec)
