@@ -65,3 +65,10 @@ async def test_beam_part_is_captured_and_graded(warm: bool) -> None:
 async def test_part_program_without_mesh_import_is_a_verdict() -> None:
     result = await execute("x = 1\n", "", ExecutionLimits(mode="part"), check=False)
     assert result.part is None and "never called FEMinterface.ImportMeshFromNGsolve" in (result.error or "")
+
+
+async def test_an_interface_name_on_no_face_is_not_an_interface() -> None:
+    program = BEAM.format(L=0.5).replace("shape.faces.Max(X).name = 'right'\n", "")
+    run = await execute(program, "", ExecutionLimits(mode="part", timeout_s=120), check=False)
+    assert run.error is None and run.part["interfaces"] == ["left"]
+    assert any("['right']" in w for w in run.warnings)

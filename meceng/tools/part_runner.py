@@ -51,8 +51,14 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         t = time.perf_counter()
         out = original_import(fem, mesh, density, youngsModulus, poissonsRatio, *args, **kwargs)
         times["import_s"] += time.perf_counter() - t
+        names = tuple(str(n) for n in (kwargs.get("boundaryNamesList") or ()))
+        # a name that is on no face gives no node set (Exudyn only prints a warning): it is not an interface
+        on_mesh = _boundary_names(mesh)
+        missing = [n for n in names if on_mesh is not None and n not in on_mesh]
+        if missing:
+            warnings.append(f"interfaces without faces on the mesh: {missing}")
         state.update(fem=fem, material=(float(youngsModulus), float(poissonsRatio), float(density)),
-                     interfaces=tuple(kwargs.get("boundaryNamesList") or ()), stage="meshed")
+                     interfaces=tuple(n for n in names if n not in missing), stage="meshed")
         state["geometry"] = _mesh_geometry(mesh, state["interfaces"])
         stage_log.write("meshed\n")
         return out
@@ -112,6 +118,13 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
     tmp.write_text(json.dumps(result))
     os.replace(tmp, workdir / f"result-{token}.json")
     return 0
+
+
+def _boundary_names(mesh: Any) -> set[str] | None:
+    try:
+        return {str(n) for n in mesh.GetBoundaries()}
+    except Exception:  # not an ngsolve mesh: cannot tell, trust the list
+        return None
 
 
 def _mesh_geometry(mesh: Any, names: tuple[str, ...]) -> dict[str, Any]:
