@@ -90,3 +90,14 @@ async def test_evaluate_program_grades_a_part_without_selection() -> None:
     verdict, candidate, _ = await evaluate_program(instance, instance.reference_program)
     assert verdict.overall and candidate.part["interfaces"] == ["left", "right"]
     assert verdict.stage("choose_part_components").passed is None
+
+
+async def test_a_missing_chamfer_fails_at_the_mesh() -> None:
+    """Bearing block with pedestal without its top chamfers: the surfaces differ where the chamfer should be."""
+    instance = default_registry().get("bearing_block_with_pedestal_part").instance(0)
+    program = instance.reference_program.replace("shape = shape.MakeChamfer(top_edges, top_chamfer)\n", "")
+    assert program != instance.reference_program
+    verdict, candidate, _ = await evaluate_program(instance, program)
+    stages = {s.name: s.passed for s in verdict.stages}
+    assert candidate.error is None and stages["interface_name_match"] and stages["material_match"]
+    assert stages["mesh_match"] is False and verdict.overall is False
