@@ -689,7 +689,27 @@ async def evaluate_program(
     if instance.kind == "part":
         verdict, candidate, reference, _ = await evaluator.evaluate_part(instance, code, selected, None)
         return verdict, candidate, reference
+    if instance.kind == "assembly":
+        import tempfile
+
+        with tempfile.TemporaryDirectory(prefix="meceng-parts-") as folder:
+            files = await ground_truth_parts(instance, Path(folder), evaluator)
+            return await evaluator.evaluate(instance, code, selected, None, files=files)
     return await evaluator.evaluate(instance, code, selected, None)
+
+
+async def ground_truth_parts(instance: TaskInstance, folder: Path, evaluator: Evaluator) -> dict[str, Path]:
+    """The assembly's parts made from their ground truths and saved as '<slot>.npz' in ``folder``
+    (for grading an assembly program outside a run, where no LLM made the parts)."""
+
+    async def one(slot: str, part: TaskInstance) -> tuple[str, Path]:
+        path = folder / f"{slot}.npz"
+        run = await evaluator._execute_part(part.reference_program, part, check=False, save_to=path)
+        if run.fem_file is None:
+            raise RuntimeError(f"ground-truth part {part.key} failed: {run.error}")
+        return f"{slot}.npz", path
+
+    return dict(await asyncio.gather(*(one(slot, part) for slot, part in instance.parts)))
 
 
 async def rescore(run_dir: Path, registry: TaskRegistry | None = None, catalog: Catalog | None = None,

@@ -47,3 +47,18 @@ def test_wrong_arguments_are_clear_errors(tmp_path) -> None:
     assert proc.returncode == 2 and "cannot read" in proc.stderr
     proc = meceng("run", "--variations", "0")
     assert proc.returncode == 2
+
+
+def test_level3_tasks_show_and_evaluate_an_assembly(tmp_path) -> None:
+    part = json.loads(meceng("tasks", "show", "flexible_beam_part", "--seed", "1", "--json").stdout)
+    assert part["kind"] == "part" and part["part"]["interfaces"] == ["left", "right"]
+    assembly = json.loads(meceng("tasks", "show", "cantilever_beam", "--seed", "1", "--json").stdout)
+    assert assembly["kind"] == "assembly" and list(assembly["parts"]) == ["beam"]
+    assert "Part Loading Info" in assembly["description"]
+    listed = json.loads(meceng("tasks", "list", "--level", "3a", "--json").stdout)
+    assert [t["id"] for t in listed] == list(range(51, 73))
+    program = tmp_path / "assembly.py"
+    program.write_text(meceng("tasks", "reference", "cantilever_beam", "--seed", "1").stdout)
+    graded = meceng("evaluate", "cantilever_beam", "--seed", "1", "--code", str(program), "--json")
+    assert graded.returncode == 0, graded.stdout + graded.stderr
+    assert json.loads(graded.stdout)["overall"] is True
