@@ -66,3 +66,17 @@ async def test_perturbed_parameter_is_detected(slug: str) -> None:
     verdict, _, _ = await evaluate_program(instance, program)
     assert not verdict.overall
     assert verdict.first_failure in ("graph_content_match", "solution_match", "solver_success"), verdict.first_failure
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(3000)
+def test_gold_level3_sweep_scores_every_part_and_assembly(tmp_path: Path) -> None:
+    """Levels 3a and 3b with the gold backend: every part and every assembly passes every metric."""
+    run = _sweep(tmp_path, variations=1, levels="3a,3b")
+    failures = [(t["slug"], t.get("origin"), t["first_failure"], t.get("infrastructure_error"))
+                for t in run["tasks"] if not t["overall"]]
+    assert failures == []
+    assemblies = [t for t in run["tasks"] if t["level"] == "3b"]
+    standalone = [t for t in run["tasks"] if t["level"] == "3a" and not t.get("origin")]
+    assert len(assemblies) == 12 and len(standalone) == 22
+    assert all(t["files"].get("part") for t in run["tasks"] if t["level"] == "3a")
