@@ -65,7 +65,8 @@ def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
 def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     add_llm_arguments(parser)
     parser.add_argument("--levels", type=_levels, default=("1", "2"), help="e.g. 1,2")
-    parser.add_argument("--only", default="", help="comma-separated task slugs or ids")
+    parser.add_argument("--only", action="append", default=[],
+                        help="task slugs or ids, comma-separated; repeatable")
     parser.add_argument("--variations", type=_positive_int, default=3, help="parameter variations per model")
     parser.add_argument("--seed", type=int, default=0, help="first instance seed")
     parser.add_argument("--out", type=Path, default=Path("runs"), help="directory for run folders")
@@ -113,7 +114,7 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
                          f"choose from {', '.join(CODE_TEMPLATES)}")
     return RunSettings(
-        llm=llm, levels=args.levels, only=tuple(x.strip() for x in args.only.split(",") if x.strip()),
+        llm=llm, levels=args.levels, only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()),
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,

@@ -41,7 +41,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--select-template", action="append")
     p.add_argument("--code-template", action="append")
     p.add_argument("--levels", type=_levels)
-    p.add_argument("--only", default=None, help="comma-separated task slugs or ids")
+    p.add_argument("--only", action="append", default=None, help="task slugs or ids, comma-separated; repeatable")
     p.add_argument("--variations", type=_positive_int)
     p.add_argument("--seed", type=int)
     p.add_argument("--batch-size", type=_positive_int)
@@ -77,7 +77,7 @@ def main(argv: list[str] | None = None) -> int:
         code_templates=tuple(args.code_template) if args.code_template else None,
         levels=args.levels, variations=args.variations, seed=args.seed, out=args.out, workers=args.workers,
         exec_timeout_s=args.timeout,
-        only=tuple(x.strip() for x in args.only.split(",") if x.strip()) if args.only else None,
+        only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()) if args.only else None,
     )
     points = grid_points(spec)
     if not points:
@@ -103,7 +103,8 @@ def main(argv: list[str] | None = None) -> int:
         import os
 
         settings = RunSettings(
-            llm=point.llm(levels=spec.levels), levels=spec.levels, only=spec.only, variations=spec.variations, seed=spec.seed,
+            llm=point.llm(levels=spec.levels), levels=spec.levels, only=spec.only, variations=spec.variations,
+            seed=spec.seed,
             out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
             exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
             code_template=point.code_template, progress=not args.no_progress,
