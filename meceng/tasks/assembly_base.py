@@ -45,7 +45,9 @@ class AssemblyModel:
     """A parameterized flexible multibody system built on level 3a parts.
 
     ``params`` include the master parameters the parts share. ``model_code`` uses the parameter
-    names (and ``derive``'s) as variables and loads each part from ``'<slot>.npz'``.
+    names (and those of ``derive`` and ``from_parts``) as variables and loads each part from
+    ``'<slot>.npz'``. ``from_parts(values, {slot: part values})`` adds values that depend on a
+    part's own dimensions (the centre of an interface the text must state).
     """
 
     id: int
@@ -57,6 +59,7 @@ class AssemblyModel:
     model_code: str
     sim: SimSettings
     derive: Any = None  # Callable[[dict], dict] | None
+    from_parts: Any = None  # Callable[[dict, dict[str, dict]], dict] | None: values taken from the parts
     level: str = "3b"
 
     @property
@@ -87,6 +90,8 @@ class AssemblyModel:
         key = f"{self.slug}@{seed}"
         parts = tuple((slot, models[slug].instance(seed, master=values, origin=key))
                       for slot, slug in self.choose_parts(seed))
+        if self.from_parts is not None:  # e.g. a joint point that depends on a part's own dimensions
+            values.update(self.from_parts(dict(values), {slot: dict(part.params) for slot, part in parts}))
         text = " ".join(self.description.format(**values).split())
         text += f" Simulate the system for {self.sim.end_time:g} s using {self.sim.steps} time steps."
         count = len(parts)

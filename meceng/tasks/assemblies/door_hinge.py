@@ -11,7 +11,7 @@ holes, x_door = 25-34 mm from the axis) pushes the leaf open. 2 x (7 + 12) = 38 
 2 Euler-parameter + 6 clamp + 5 revolute constraints: 25 degrees of freedom, none redundant.
 
 The clamp's ground point is the centre of the pin-side leaf's 'mount', [-hole_x, 0, mid_z]; hole_x
-depends on that leaf's own leaf_width, not on a master parameter, so ``HingeAssembly`` adds it
+depends on that leaf's own leaf_width, not on a master parameter, so ``mount_point`` adds it
 (``mount_x``) to the instance's values, drawn from the leaf's own values for the same seed. The
 interface markers sit at the weighted centres of the meshed surfaces: at t = 0 the joined 'pin' and
 'bore' meet within ~10 micrometres and the 'mount' marker lies within ~25 micrometres of the stated
@@ -34,7 +34,6 @@ inertia, d the 'door' marker's position) to 0.1 %, and at the start theta'' = F 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 from meceng.tasks.assembly_base import AssemblyModel, PartSlot
@@ -42,24 +41,11 @@ from meceng.tasks.base import Param, SimSettings
 from meceng.tasks.parts.masters_hinge import HINGE_MASTERS, exact
 
 
-@dataclass(frozen=True)
-class HingeAssembly(AssemblyModel):
-    """An assembly whose values also hold ``mount_x``: the x-coordinate of the centre of the pin-side
-    leaf's 'mount' interface (its two screw holes, at x = -hole_x), the clamp's ground point.
-
-    hole_x is the pin-side leaf's own value (it depends on its own leaf_width); it is drawn with the
-    instance's seed and master values exactly as the leaf's part instance draws it, so text and
-    ground truth name the same point. hole_x has three significant digits: -hole_x is exact.
-    """
-
-    def sample_params(self, seed: int) -> dict[str, Any]:
-        from meceng.tasks.registry import default_registry
-
-        values = super().sample_params(seed)
-        leaf = default_registry().get(dict(self.choose_parts(seed))["pin_leaf"])
-        own = leaf.sample_params(seed, master=values)
-        values["mount_x"] = -own["hole_x"]
-        return values
+def mount_point(values: dict[str, Any], parts: dict[str, dict[str, Any]]) -> dict[str, Any]:
+    """The clamp's ground point: the centre of the pin-side leaf's 'mount' interface (its two screw
+    holes at x = -hole_x); hole_x is the leaf's own value (it depends on its own leaf_width) and has
+    three significant digits, so -hole_x is exact."""
+    return {"mount_x": -parts["pin_leaf"]["hole_x"]}
 
 
 #: a Jacobian per step: 2-3 Newton iterations per step instead of 5-7 (see the module docstring)
@@ -70,7 +56,7 @@ def derive(v: dict) -> dict:
     return {"mid_z": exact(1.5 * v["knuckle_length"])}
 
 
-TASK = HingeAssembly(
+TASK = AssemblyModel(
     id=81,
     name="door hinge",
     description="""
@@ -112,4 +98,5 @@ mbs.AddLoad(Force(markerNumber=gapLeaf['gap_leaf:door'], loadVector=[0, door_for
 """,
     sim=SimSettings(end_time=0.1, steps=200, extra=(NEWTON,)),
     derive=derive,
+    from_parts=mount_point,
 )
