@@ -186,7 +186,7 @@ class Evaluator:
         if reference.error is not None or reference.part is None or reference.surface is None:
             failure = f"ground-truth part failed: {reference.error or 'no part captured'}"
             return Verdict((), infrastructure_error=failure), Execution(stage="not_run"), reference, facts
-        truth = part_data(reference.part, reference.surface)
+        truth = part_data(reference.part, reference.surface, reference.fine_surface)
         minimum = minimum_maxh(truth, instance.part.maxh)
         facts["minimum_maxh"] = minimum
         pending = save_to.with_name(save_to.name + ".pending.npz") if save_to is not None else None
@@ -202,7 +202,7 @@ class Evaluator:
         produced = None
         frequencies = None
         if candidate.error is None and candidate.part is not None and candidate.surface is not None:
-            produced = part_data(candidate.part, candidate.surface)
+            produced = part_data(candidate.part, candidate.surface, candidate.fine_surface)
             sizes = {max(v, minimum) for v in facts.get("maxh", [])}
             if len(sizes) == 1 and (size := sizes.pop()) != instance.part.maxh:
                 remeshed = await self._reference_at(instance, size)

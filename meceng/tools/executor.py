@@ -68,6 +68,7 @@ class Execution:
     warnings: tuple[str, ...] = ()
     part: dict[str, Any] | None = None
     surface: tuple[np.ndarray, np.ndarray] | None = None
+    fine_surface: tuple[np.ndarray, np.ndarray] | None = None  # the solid's surface, meshed finer (metric)
     part_times: dict[str, float] = field(default_factory=dict)
     fem_file: str | None = None
     stdout_tail: str = ""
@@ -297,11 +298,13 @@ def _collect(
         data = np.load(traj_path)
         times, trajectory = data[:, 0], data[:, 1:]
     part = result.get("part")
-    surface = None
+    surface = fine_surface = None
     part_path = scratch / f"part-{token}.npz"
     if part is not None and part_path.exists():
         with np.load(part_path) as data:
             surface = (data["vertices"], data["triangles"])
+            if "fine_vertices" in data:
+                fine_surface = (data["fine_vertices"], data["fine_triangles"])
     fem_file = None
     fem_path = scratch / f"fem-{token}.npz"
     if limits.save_fem_to and fem_path.exists():
@@ -312,6 +315,7 @@ def _collect(
     return Execution(
         part=part,
         surface=surface,
+        fine_surface=fine_surface,
         part_times=result.get("part_times") or {},
         fem_file=fem_file,
         stage=str(result.get("stage", last_stage)),
