@@ -467,8 +467,11 @@ async def run_assembly_task(
     Returns the part records followed by the assembly's record.
     """
     t0 = time.perf_counter()
+    # a part the assembly uses twice (two identical bearing blocks) is generated once and loaded twice
+    unique = {part.key: part for _, part in instance.parts}
     part_records = list(await asyncio.gather(
-        *(run_part_task(part, backend, evaluator, settings, writer) for _, part in instance.parts)))
+        *(run_part_task(part, backend, evaluator, settings, writer) for part in unique.values())))
+    by_key = dict(zip(unique, part_records, strict=True))
     t_parts = time.perf_counter() - t0
     started = all(r["overall"] for r in part_records)
     passed = sum(1 for r in part_records if r["overall"])
@@ -482,8 +485,7 @@ async def run_assembly_task(
                   *(StageResult(name, None, "not started") for name in RIGID_STAGES))
         record = _assembly_record(instance, Verdict(stages), part_keys, part_timing)
         return [*part_records, record]
-    files = {f"{slot}.npz": writer.run_dir / record["files"]["part"]
-             for (slot, _), record in zip(instance.parts, part_records, strict=True)}
+    files = {f"{slot}.npz": writer.run_dir / by_key[part.key]["files"]["part"] for slot, part in instance.parts}
     catalog = evaluator.assembly_catalog
     t1 = time.perf_counter()
     selection = await choose_components(backend, instance, catalog, settings.select_template)
@@ -727,13 +729,33 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None, catalog: 
     evaluator = Evaluator(workers, ExecutionLimits(timeout_s=run["settings"]["pipeline"]["exec_timeout_s"]),
                           Tolerances(solution=run["settings"]["pipeline"]["solution_tolerance"]), catalog)
 
+    def instance_of(record: dict[str, Any]) -> TaskInstance:
+        if record.get("origin"):  # a part drawn for an assembly: with the assembly's master values
+            slug, seed = record["origin"].rsplit("@", 1)
+            assembly = registry.get(slug).instance(int(seed))
+            return next(part for _, part in assembly.parts if part.key == record_key(record))
+        return registry.get(record["slug"]).instance(record["seed"])
+
     async def one(record: dict[str, Any]) -> dict[str, Any]:
         if record.get("first_failure") == "infrastructure" or "generation" not in record:
-            return record
-        instance = registry.get(record["slug"]).instance(record["seed"])
+            return record  # also an assembly that never started: nothing was generated
+        instance = instance_of(record)
         generation = record["generation"]
-        verdict, candidate, reference = await evaluator.evaluate(
-            instance, generation.get("code"), tuple(record["selection"].get("names", ())), generation.get("error"))
+        selected = tuple(record["selection"].get("names", ()))
+        if instance.kind == "part":
+            verdict, candidate, reference, _ = await evaluator.evaluate_part(
+                instance, generation.get("code"), selected, generation.get("error"))
+        elif instance.kind == "assembly":
+            parts = {r["origin"] + "/" + f"{r['slug']}@{r['seed']}": r for r in run["tasks"] if r.get("origin")}
+            files = {f"{slot}.npz": run_dir / parts[part.key]["files"]["part"] for slot, part in instance.parts}
+            chain, candidate, reference = await evaluator.evaluate(
+                instance, generation.get("code"), selected, generation.get("error"), files=files)
+            verdict = Verdict((*(StageResult(**s) for s in record["stages"][:2]), *chain.stages),
+                              chain.error_categories, chain.differences, chain.solution_norm,
+                              chain.infrastructure_error)
+        else:
+            verdict, candidate, reference = await evaluator.evaluate(
+                instance, generation.get("code"), selected, generation.get("error"))
         updated = {**record, **verdict.to_json(), "execution": candidate.summary(),
                    "reference_execution": reference.summary(), "evaluator": EVALUATOR_VERSION}
         return updated

@@ -97,3 +97,24 @@ def test_gold_assemblies_pass_and_a_failed_part_stops_its_assembly(tmp_path: Pat
     levels = run["summary"]["levels"]
     assert levels["3a"]["rates"]["overall"] == 0.5 and levels["3b"]["rates"]["mbs_started"] == 0.5
     assert np.isclose(levels["3b"]["rates"]["overall"], 0.5)
+
+
+def test_a_part_used_twice_is_made_once_and_rescoring_keeps_the_verdicts(tmp_path: Path) -> None:
+    """Two identical bearing blocks: one part task, loaded into both slots; rescore grades parts and
+    assembly again (with the assembly's master values and the saved parts) and agrees."""
+    import asyncio
+
+    from meceng.pipeline import rescore
+
+    settings = RunSettings(levels=("3b",), only=("rotor_in_two_bearing_blocks_with_pedestal",), variations=1,
+                           out=tmp_path, run_name="twice", progress=False, workers=2)
+    run_json = Path(asyncio.run(run_benchmark(settings)))
+    run = json.loads(run_json.read_text())
+    parts = [t for t in run["tasks"] if t["level"] == "3a"]
+    assembly = next(t for t in run["tasks"] if t["level"] == "3b")
+    assert sorted(t["slug"] for t in parts) == ["balanced_rotor_part", "bearing_block_with_pedestal_part"]
+    assert assembly["parts"]["block1"] == assembly["parts"]["block2"] and assembly["overall"]
+    again = json.loads(asyncio.run(rescore(run_json.parent)).read_text())
+    assert [(t["slug"], t["overall"], [s["passed"] for s in t["stages"]]) for t in again["tasks"]] == \
+        [(t["slug"], t["overall"], [s["passed"] for s in t["stages"]]) for t in run["tasks"]]
+    assert again["tasks"][-1]["execution"]["stage"] == "solved"
