@@ -451,8 +451,7 @@ async def run_part_task(
     record["part"] = {**facts, "spec": instance.part.to_json(), "reference_times": reference.part_times,
                       "reference_nodes": (reference.part or {}).get("nodes")}
     if agent is not None:
-        record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
-                           "first_stages": [s.to_json() for s in first.stages]}
+        record["agent"] = _agent_block(agent, first)
     if instance.origin:
         record["origin"] = instance.origin
     return record
@@ -513,8 +512,7 @@ async def run_assembly_task(
     record = task_record(instance, selection, generation, verdict, candidate, reference, timing, program_files)
     record["parts"] = part_keys
     if agent is not None:
-        record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
-                           "first_stages": [s.to_json() for s in first.stages]}
+        record["agent"] = _agent_block(agent, first)
     return [*part_records, record]
 
 
@@ -551,9 +549,14 @@ async def _run_agent_task(
     files = writer.save_programs(instance, agent.final_code)
     record = task_record(instance, selection, generation, verdict, candidate, reference,
                          {"llm_s": t_llm, "evaluation_s": t_total - t_llm, "total_s": t_total}, files)
-    record["agent"] = {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
-                       "first_stages": [s.to_json() for s in first.stages]}
+    record["agent"] = _agent_block(agent, first)
     return record
+
+
+def _agent_block(agent: AgentResult, first: Verdict) -> dict[str, Any]:
+    """The agent's record: transcript, rounds, tools, and the verdict of its first program."""
+    return {**agent.to_json(), "first_overall": first.overall, "first_failure": first.first_failure,
+            "first_stages": [s.to_json() for s in first.stages]}
 
 
 def _agent_generation(agent: AgentResult) -> Generation:

@@ -5,6 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+import exudyn as exu
+import numpy as np
+
 from meceng.tasks.base import TaskInstance
 from meceng.tools.executor import Execution, ExecutionLimits, execute
 
@@ -37,3 +40,19 @@ def build(instance: TaskInstance, files: dict[str, Path]) -> dict[str, Any]:
     namespace: dict[str, Any] = {"__name__": "assembly"}
     exec(compile(program, f"<{instance.key}>", "exec"), namespace)
     return namespace
+
+
+def joints(mbs: Any) -> list[int]:
+    """The generic joints of a system, in creation order."""
+    return [i for i in range(mbs.systemData.NumberOfObjects()) if mbs.GetObject(i)["objectType"] == "JointGeneric"]
+
+
+def joint_offsets(mbs: Any) -> list[float]:
+    """Distance between the two markers of every joint (after mbs.Assemble())."""
+    position = exu.OutputVariableType.Position
+    offsets = []
+    for joint in joints(mbs):
+        m0, m1 = mbs.GetObject(joint)["markerNumbers"]
+        offsets.append(float(np.linalg.norm(np.subtract(mbs.GetMarkerOutput(m0, position),
+                                                        mbs.GetMarkerOutput(m1, position)))))
+    return offsets

@@ -19,7 +19,7 @@ from typing import Any
 import exudyn as exu
 import numpy as np
 import pytest
-from assemblies import build, run_assembly, saved_parts
+from assemblies import build, joint_offsets, joints, run_assembly, saved_parts
 from exudyn.rigidBodyUtilities import EulerParameters2RotationMatrix
 from exudyn.utilities import SensorMarker, SensorObject
 from scipy.integrate import solve_ivp
@@ -53,20 +53,6 @@ def table(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFacto
 def verdict(candidate, reference, instance):
     return evaluate_rigid(candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
                           selected=None, required=(), dependencies={})
-
-
-def joints(mbs) -> list[int]:
-    return [i for i in range(mbs.systemData.NumberOfObjects()) if mbs.GetObject(i)["objectType"] == "JointGeneric"]
-
-
-def joint_offsets(mbs) -> list[float]:
-    """Distance between the two markers of every joint (after mbs.Assemble())."""
-    offsets = []
-    for joint in joints(mbs):
-        m0, m1 = mbs.GetObject(joint)["markerNumbers"]
-        offsets.append(float(np.linalg.norm(np.subtract(mbs.GetMarkerOutput(m0, POSITION),
-                                                        mbs.GetMarkerOutput(m1, POSITION)))))
-    return offsets
 
 
 # ------------------------------------------------------------------------------------------ pendulum

@@ -21,7 +21,7 @@ from pathlib import Path
 import exudyn as exu
 import numpy as np
 import pytest
-from assemblies import build, run_assembly, saved_parts
+from assemblies import build, joint_offsets, joints, run_assembly, saved_parts
 from exudyn.FEM import FEMinterface
 from exudyn.utilities import SensorNode, SensorObject
 
@@ -63,10 +63,6 @@ def case_of(tmp_path_factory: pytest.TempPathFactory):
     return get
 
 
-def _joints(mbs) -> list[int]:
-    return [i for i in range(mbs.systemData.NumberOfObjects()) if mbs.GetObject(i)["objectType"] == "JointGeneric"]
-
-
 CASES = [(TURBINE, 0), (BENCH, 0), (BENCH, 1)]
 
 
@@ -81,11 +77,7 @@ def test_ground_truth_runs_and_the_joined_interfaces_coincide(case_of, slug: str
     namespace = build(case.instance, case.files)
     mbs = namespace["mbs"]
     mbs.Assemble()
-    offsets = []
-    for joint in _joints(mbs):
-        m0, m1 = mbs.GetObject(joint)["markerNumbers"]
-        p0, p1 = (mbs.GetMarkerOutput(m, exu.OutputVariableType.Position) for m in (m0, m1))
-        offsets.append(float(np.linalg.norm(p0 - p1)))
+    offsets = joint_offsets(mbs)
     print(slug, seed, "offsets", offsets)
     assert offsets[0] < 1e-12  # the clamp: planar faces, the weighted centre is exact
     assert max(offsets[1:]) < 1e-4  # bore / shaft: faceted cylinders, micrometres off (0.45 mm was harmful)
@@ -111,12 +103,12 @@ def test_spin_up_and_support_forces_follow_the_rigid_machine(case_of, slug: str,
 
     namespace = build(case.instance, case.files)
     mbs, body = namespace["mbs"], namespace[rotating]
-    joints = _joints(mbs)  # the clamp first, then the bearing(s), as the description orders them
+    generic = joints(mbs)  # the clamp first, then the bearing(s), as the description orders them
     node = body["FFRFReducedOrderObjectDict"]["nRigidBody"]
     spin = mbs.AddSensor(SensorNode(nodeNumber=node, outputVariableType=exu.OutputVariableType.AngularVelocity,
                                     storeInternal=True))
     forces = [mbs.AddSensor(SensorObject(objectNumber=j, outputVariableType=exu.OutputVariableType.ForceLocal,
-                                         storeInternal=True)) for j in joints]
+                                         storeInternal=True)) for j in generic]
     mbs.Assemble()
     settings = exu.SimulationSettings()
     settings.timeIntegration.endTime = sim.end_time

@@ -20,7 +20,7 @@ from pathlib import Path
 import exudyn as exu
 import numpy as np
 import pytest
-from assemblies import build, run_assembly, saved_parts
+from assemblies import build, joint_offsets, joints, run_assembly, saved_parts
 from exudyn.FEM import FEMinterface
 from exudyn.utilities import SensorNode, SensorObject
 from scipy.integrate import solve_ivp
@@ -68,10 +68,6 @@ def case_of(tmp_path_factory: pytest.TempPathFactory):
     return get
 
 
-def _joints(mbs) -> list[int]:
-    return [i for i in range(mbs.systemData.NumberOfObjects()) if mbs.GetObject(i)["objectType"] == "JointGeneric"]
-
-
 CASES = [(slug, 0) for slug in (*ONE_BLOCK, TWO_BLOCKS)] + [(ONE_BLOCK[0], 1)]
 
 
@@ -86,11 +82,7 @@ def test_ground_truth_runs_and_the_joined_interfaces_coincide(case_of, slug: str
     namespace = build(case.instance, case.files)
     mbs = namespace["mbs"]
     mbs.Assemble()
-    offsets = []
-    for joint in _joints(mbs):
-        m0, m1 = mbs.GetObject(joint)["markerNumbers"]
-        p0, p1 = (mbs.GetMarkerOutput(m, exu.OutputVariableType.Position) for m in (m0, m1))
-        offsets.append(float(np.linalg.norm(p0 - p1)))
+    offsets = joint_offsets(mbs)
     clamps = 2 if slug == TWO_BLOCKS else 1
     assert max(offsets[:clamps]) < 1e-12  # planar foot faces: the weighted centre is exact
     assert max(offsets[clamps:]) < 5e-5  # bore / seat: faceted cylinders, micrometres off
@@ -116,7 +108,7 @@ def test_spin_and_bearing_forces_follow_the_rigid_unbalanced_rotor(case_of, slug
     namespace = build(case.instance, case.files)
     mbs, rotor = namespace["mbs"], namespace["rotor"]
     rotor_markers = {int(rotor["rotor:left"]), int(rotor["rotor:right"])}
-    bearings = [j for j in _joints(mbs) if rotor_markers & {int(m) for m in mbs.GetObject(j)["markerNumbers"]}]
+    bearings = [j for j in joints(mbs) if rotor_markers & {int(m) for m in mbs.GetObject(j)["markerNumbers"]}]
     assert len(bearings) == 2
     node = rotor["FFRFReducedOrderObjectDict"]["nRigidBody"]
     spin = mbs.AddSensor(SensorNode(nodeNumber=node, outputVariableType=exu.OutputVariableType.AngularVelocity,

@@ -11,6 +11,7 @@ from typing import Any
 
 import pytest
 from netgen.occ import Cylinder, Pnt, Z
+from partgeometry import build
 
 from meceng.tasks.registry import default_registry
 from meceng.tools.executor import ExecutionLimits, execute
@@ -23,15 +24,6 @@ HINGE_MASTERS = ("pin_radius", "knuckle_outer_radius", "knuckle_length", "leaf_t
 
 def model(pid: int):
     return default_registry().get(pid)
-
-
-def build(pid: int, values: dict[str, Any]):
-    """The GT solid, built in this process without meshing, as the program text builds it."""
-    namespace: dict[str, Any] = {}
-    exec("from netgen.occ import *", namespace)
-    namespace.update(values)
-    exec(model(pid).geometry_code, namespace)
-    return namespace["shape"]
 
 
 def strip_in_disc(radius: float, thickness: float) -> float:

@@ -11,6 +11,7 @@ import math
 from typing import Any
 
 import pytest
+from partgeometry import build
 from scipy.integrate import quad
 
 from meceng.tasks.registry import default_registry
@@ -24,15 +25,6 @@ MASTERS = ("crank_length", "rod_length", "pin_radius", "thickness")
 
 def model(pid: int):
     return default_registry().get(pid)
-
-
-def build(pid: int, values: dict[str, Any]):
-    """The GT solid, built in this process without meshing, as the program text builds it."""
-    namespace: dict[str, Any] = {}
-    exec("from netgen.occ import *", namespace)
-    namespace.update(values)
-    exec(model(pid).geometry_code, namespace)
-    return namespace["shape"]
 
 
 def disc_strip(radius: float, a: float) -> float:
