@@ -233,10 +233,12 @@ def cmd_run(args: argparse.Namespace) -> int:
 def print_summary(run_json: Path) -> None:
     run = json.loads(run_json.read_text())
     summary = run["summary"]
-    rates = summary["rates"]
-    line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in rates.items() if v is not None)
     print(f"{run_json}\n{summary['counted']} tasks graded, {summary['infrastructure_failures']} infrastructure "
-          f"failures\n{line}")
+          "failures")
+    # one line per level: parts and assemblies have different stages, a mixed rate would mislead
+    for level, block in summary["levels"].items():
+        line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
+        print(f"level {level} ({block['counted']}): {line}")
 
 
 def cmd_report(args: argparse.Namespace) -> int:
