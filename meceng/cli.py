@@ -268,8 +268,25 @@ def cmd_rescore(args: argparse.Namespace) -> int:
     return 0
 
 
+class _VersionAction(argparse.Action):
+    """MecEng's version and those of the simulation stack it grades with (looked up only when asked)."""
+
+    def __init__(self, option_strings: list[str], dest: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest, nargs=0, **kwargs)
+
+    def __call__(self, parser: argparse.ArgumentParser, *args: Any, **kwargs: Any) -> None:
+        from meceng import __version__
+        from meceng.pipeline import versions
+
+        found = versions()
+        stack = ", ".join(f"{name} {found[name]}" for name in ("exudyn", "ngsolve", "scipy", "pymeshlab", "python"))
+        print(f"meceng {__version__} ({stack})")
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="meceng", description="MecEng: LLMs building multibody models")
+    parser.add_argument("--version", action=_VersionAction, help="show the versions and exit")
     sub = parser.add_subparsers(dest="command", required=True)
 
     tasks = sub.add_parser("tasks", help="list, show and print task models")

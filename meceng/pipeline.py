@@ -267,7 +267,8 @@ def versions() -> dict[str, str]:
     from importlib.metadata import PackageNotFoundError, version
 
     out = {"python": platform.python_version(), "platform": platform.platform()}
-    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "networkx", "ollama", "pymeshlab"):
+    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "networkx", "ollama",
+                    "pymeshlab"):
         try:
             out[package] = version(package)
         except PackageNotFoundError:

@@ -47,17 +47,18 @@ def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel
             rate = groups[model].get(key)
             if rate is None or rate.value is None:
                 continue
-            lo, hi = rate.interval
+            down, up = rate.error_bar
             xs.append(i + j * width)
             ys.append(100 * rate.value)
-            low.append(100 * (rate.value - lo))
-            high.append(100 * (hi - rate.value))
+            low.append(100 * down)
+            high.append(100 * up)
         ax.bar(xs, ys, width, yerr=[low, high], capsize=3, label=key)
     ax.set_xticks([i + width * (len(keys) - 1) / 2 for i in range(len(groups))], list(groups), rotation=20)
     ax.set_ylim(0, 105)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
-    ax.legend(fontsize=8)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
@@ -66,16 +67,20 @@ def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel
 def _line_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, xlabel: str) -> None:
     fig, ax = plt.subplots(figsize=(6, 4))
     for model, rates in groups.items():
-        xs = [float(k) for k in rates]
-        ys = [100 * (r.value or 0.0) for r in rates.values()]
-        ax.errorbar(xs, ys, yerr=[[100 * ((r.value or 0) - r.interval[0]) for r in rates.values()],
-                                  [100 * (r.interval[1] - (r.value or 0)) for r in rates.values()]],
+        known = {k: r for k, r in rates.items() if r.value is not None}
+        if not known:
+            continue
+        xs = [float(k) for k in known]
+        ys = [100 * r.value for r in known.values() if r.value is not None]
+        bars = [r.error_bar for r in known.values()]
+        ax.errorbar(xs, ys, yerr=[[100 * d for d, _ in bars], [100 * u for _, u in bars]],
                     marker="o", capsize=3, label=model)
     ax.set_xlabel(xlabel)
     ax.set_ylabel("overall success (%)")
     ax.set_ylim(0, 105)
     ax.set_title(title)
-    ax.legend(fontsize=8)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)

@@ -7,6 +7,7 @@ import json
 import re
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from fake_ollama import FakeOllama, chat_reply
@@ -120,3 +121,52 @@ def test_level3_tables_count_parts_and_assemblies_apart(tmp_path) -> None:
     timing = flexible_timing_table(runs)[0]
     assert timing["parts_eval_min"] == 1.5 and timing["mbs_eval_min"] == 0.2 and timing["batch_size"] == 8
     assert timing["generated_tokens_k"] == 2.5 and timing["context_p95"] == 1000
+
+
+def test_wilson_interval_holds_the_rate_at_the_ends() -> None:
+    from meceng.eval.report import Rate
+
+    for n in range(1, 60):  # n = 3, 6, 7 at 0 % and 10, 13 at 100 % round past the rate
+        for passed in (0, n):
+            rate = Rate(passed, n)
+            low, high = rate.interval
+            assert low <= rate.value <= high
+            assert min(rate.error_bar) >= 0.0
+    assert Rate(0, 0).error_bar == (0.0, 0.0)
+
+
+async def _one_sided_run(tmp_path: Path, name: str, responder, only: tuple[str, ...], variations: int) -> Path:
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model=name, backend="ollama", hosts=(server.url,), max_attempts=1)
+        settings = RunSettings(llm=llm, only=only, variations=variations, out=tmp_path / "runs", run_name=name,
+                               progress=False)
+        return await run_benchmark(settings)
+
+
+async def test_report_on_perfect_failed_and_infrastructure_only_runs(tmp_path: Path) -> None:
+    """The first thing a user reports on is a perfect gold run: rates of 100 % (and 0 %, and runs
+    where nothing was graded) must give a report, not a matplotlib error."""
+    from meceng.report import build_report
+
+    # n = 10 at 100 % and n = 6 at 0 % are sizes where the interval's end rounds past the rate
+    gold = RunSettings(only=("single_mass_oscillator",), variations=10, out=tmp_path / "runs", run_name="gold",
+                       progress=False)
+    perfect = await run_benchmark(gold)
+    single = await run_benchmark(replace(gold, variations=1, run_name="single"))  # n = 1
+    failed = await _one_sided_run(tmp_path, "failing:1b", lambda body: (200, chat_reply("no idea"), {}),
+                                  SLUGS, 3)
+    broken = await _one_sided_run(tmp_path, "absent:1b", lambda body: (404, {"error": "model not found"}, {}),
+                                  SLUGS, 1)
+    assert {t["overall"] for t in json.loads(perfect.read_text())["tasks"]} == {True}
+    assert {t["overall"] for t in json.loads(failed.read_text())["tasks"]} == {False}
+    assert {t["first_failure"] for t in json.loads(broken.read_text())["tasks"]} == {"infrastructure"}
+
+    for runs in ([perfect.parent], [single.parent], [failed.parent], [broken.parent],
+                 [perfect.parent, failed.parent, broken.parent]):
+        out = tmp_path / ("report-" + "-".join(r.name for r in runs))
+        written = build_report(runs, out)
+        assert (out / "report.html").stat().st_size > 0 and (out / "report.md").stat().st_size > 0
+        assert (out / "stages.png").stat().st_size > 0
+        assert all(Path(p).exists() for p in written.values())
+    markdown = (tmp_path / "report-gold" / "report.md").read_text()
+    assert "100.0 [" in markdown

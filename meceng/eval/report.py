@@ -35,7 +35,8 @@ def wilson(successes: int, n: int, z: float = 1.959963984540054) -> tuple[float,
     denominator = 1 + z * z / n
     centre = (p + z * z / (2 * n)) / denominator
     half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator
-    return max(0.0, centre - half), min(1.0, centre + half)
+    # rounding can put an end a hair past the rate itself (at 0 % or 100 %): the interval must hold it
+    return max(0.0, min(p, centre - half)), min(1.0, max(p, centre + half))
 
 
 @dataclass(frozen=True)
@@ -50,6 +51,14 @@ class Rate:
     @property
     def interval(self) -> tuple[float, float]:
         return wilson(self.passed, self.n)
+
+    @property
+    def error_bar(self) -> tuple[float, float]:
+        """Distances from the rate down and up to the interval's ends, never negative (for plots)."""
+        if self.value is None:
+            return 0.0, 0.0
+        low, high = self.interval
+        return max(0.0, self.value - low), max(0.0, high - self.value)
 
     def text(self) -> str:
         if not self.n:
