@@ -1,0 +1,189 @@
+"""The evaluation service: runs candidate and reference programs in isolation and grades them.
+
+Executions are bounded by ``workers`` slots (the fork server's children or cold interpreters).
+A ground truth runs once per task instance and is shared by everyone who asks for it, started
+as early as possible so it runs while the model is still answering.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import re
+import time
+from collections.abc import Awaitable, Callable
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from meceng.agents.catalog import Catalog, assembly_catalog, part_catalog, rigid_catalog
+from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.eval.parts import evaluate_part, minimum_maxh, part_data
+from meceng.tasks.base import TaskInstance
+from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.meshcheck import check_mesh_size
+from meceng.tools.warm import WarmPool
+
+
+class ReferenceCache:
+    """Ground-truth executions, run once per task instance and shared by everyone who asks."""
+
+    def __init__(self, run: Callable[[TaskInstance], Awaitable[Execution]]) -> None:
+        self._run = run
+        self._tasks: dict[str, asyncio.Task[Execution]] = {}
+
+    def start(self, instance: TaskInstance) -> asyncio.Task[Execution]:
+        task = self._tasks.get(instance.key)
+        if task is None:
+            task = asyncio.ensure_future(self._run(instance))
+            self._tasks[instance.key] = task
+        return task
+
+    async def get(self, instance: TaskInstance) -> Execution:
+        return await asyncio.shield(self.start(instance))
+
+
+def not_run(code_error: str | None) -> Execution:
+    """The candidate 'execution' of an answer that had no program to run."""
+    return Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
+
+
+class Evaluator:
+    """Runs candidate and reference programs in isolation (bounded by ``workers``) and grades."""
+
+    def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog | None = None,
+                 pool: WarmPool | None = None, parts: Catalog | None = None,
+                 part_timeout_s: float = 300.0) -> None:
+        self.slots = asyncio.Semaphore(workers)
+        self.pool = pool
+        self.limits = limits
+        self.tolerances = tolerances
+        self.catalog = catalog or rigid_catalog()
+        self.part_catalog = parts or part_catalog()
+        self.assembly_catalog = assembly_catalog()
+        self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
+        self.references = ReferenceCache(self._run_reference)
+        self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
+
+    def catalog_for(self, instance: TaskInstance) -> Catalog:
+        return {"part": self.part_catalog, "assembly": self.assembly_catalog}.get(instance.kind, self.catalog)
+
+    def limits_for(self, instance: TaskInstance) -> ExecutionLimits:
+        return self.part_limits if instance.kind == "part" else self.limits
+
+    def prefetch(self, instance: TaskInstance) -> None:
+        """Start the reference execution now, while the LLM is still busy with this task."""
+        if instance.kind != "assembly":  # an assembly's reference needs the parts the LLM makes first
+            self.references.start(instance)
+
+    async def execute(self, program: str, instance: TaskInstance, check: bool,
+                      files: dict[str, Path] | None = None) -> Execution:
+        async with self.slots:
+            return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool, files=files)
+
+    async def execute_part(self, program: str, instance: TaskInstance, check: bool,
+                           save_to: Path | None = None) -> Execution:
+        limits = replace(self.part_limits, n_modes=instance.part.n_modes,
+                         save_fem_to=str(save_to) if save_to is not None else None)
+        async with self.slots:
+            return await execute(program, "", limits, check=check, pool=self.pool)
+
+    async def _run_reference(self, instance: TaskInstance) -> Execution:
+        if instance.kind == "part":
+            return await self.execute_part(instance.reference_program, instance, check=False)
+        return await self.execute(instance.reference_program, instance, check=False)
+
+    async def _reference_at(self, instance: TaskInstance, maxh: float) -> Execution:
+        """The ground-truth part meshed with another maxh (run once per instance and size)."""
+        key = (instance.key, maxh)
+        if key not in self._remeshed:
+            program = re.sub(r"GenerateMesh\(maxh=[^)]*\)", f"GenerateMesh(maxh={maxh!r})", instance.reference_program)
+            self._remeshed[key] = asyncio.ensure_future(self.execute_part(program, instance, check=False))
+        return await asyncio.shield(self._remeshed[key])
+
+    async def evaluate(
+        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None,
+        files: dict[str, Path] | None = None,
+    ) -> tuple[Verdict, Execution, Execution]:
+        """Run candidate and reference, grade with the level 1-2 chain. ``files``: the parts an
+        assembly loads; both programs get the same ones (the reference is then run uncached)."""
+        if files:
+            reference_task = asyncio.ensure_future(
+                self.execute(instance.reference_program, instance, check=False, files=files))
+        else:
+            reference_task = asyncio.ensure_future(self.references.get(instance))
+        candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
+        reference = await reference_task
+        verdict = evaluate_rigid(
+            candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
+            selected=selected, required=instance.required_components,
+            dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
+        )
+        return verdict, candidate, reference
+
+    async def evaluate_part(
+        self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None,
+        save_to: Path | None = None,
+    ) -> tuple[Verdict, Execution, Execution, dict[str, Any]]:
+        """Level 3a: ground truth first (its bounding box sets the finest allowed maxh), then the
+        mesh-size pre-check, the candidate part, the part metrics. ``save_to`` keeps a passing part.
+
+        Returns the verdict, both executions and facts about the pre-check and the metrics' time.
+        """
+        reference = await self.references.get(instance)
+        facts: dict[str, Any] = {}
+        if reference.error is not None or reference.part is None or reference.surface is None:
+            failure = f"ground-truth part failed: {reference.error or 'no part captured'}"
+            return Verdict((), infrastructure_error=failure), Execution(stage="not_run"), reference, facts
+        truth = part_data(reference.part, reference.surface, reference.fine_surface)
+        minimum = minimum_maxh(truth, instance.part.maxh)
+        facts["minimum_maxh"] = minimum
+        pending = save_to.with_name(save_to.name + ".pending.npz") if save_to is not None else None
+        if code is None:
+            candidate = not_run(code_error)
+        else:
+            mesh_check = check_mesh_size(code, minimum)
+            facts.update(maxh=list(mesh_check.maxh), maxh_raised=mesh_check.raised)
+            if mesh_check.code is None:
+                candidate = Execution(stage="flagged", error=mesh_check.error, error_kind="mesh_size")
+            else:
+                candidate = await self.execute_part(mesh_check.code, instance, check=True, save_to=pending)
+        produced = None
+        frequencies = None
+        if candidate.error is None and candidate.part is not None and candidate.surface is not None:
+            produced = part_data(candidate.part, candidate.surface, candidate.fine_surface)
+            sizes = {max(v, minimum) for v in facts.get("maxh", [])}
+            if len(sizes) == 1 and (size := sizes.pop()) != instance.part.maxh:
+                remeshed = await self._reference_at(instance, size)
+                if remeshed.part is not None:
+                    frequencies = np.asarray(remeshed.part["eigenfrequencies"], dtype=float)
+                    facts["reference_frequencies_at_maxh"] = size
+        t0 = time.perf_counter()
+        stages = await asyncio.to_thread(
+            evaluate_part, produced, truth, selected=selected, required=instance.required_components,
+            dependencies=self.part_catalog.dependency_map(), failure=candidate.error,
+            reference_frequencies=frequencies)
+        facts["metrics_s"] = time.perf_counter() - t0
+        verdict = Verdict(tuple(stages))
+        if pending is not None and save_to is not None and pending.exists():
+            if verdict.overall:
+                os.replace(pending, save_to)
+                facts["saved_part"] = str(save_to)
+            else:
+                pending.unlink()
+        return verdict, candidate, reference, facts
+
+    async def ground_truth_parts(self, instance: TaskInstance, folder: Path) -> dict[str, Path]:
+        """The assembly's parts made from their ground truths and saved as '<slot>.npz' in ``folder``
+        (for grading an assembly program outside a run, where no LLM made the parts)."""
+
+        async def one(slot: str, part: TaskInstance) -> tuple[str, Path]:
+            path = folder / f"{slot}.npz"
+            run = await self.execute_part(part.reference_program, part, check=False, save_to=path)
+            if run.fem_file is None:
+                raise RuntimeError(f"ground-truth part {part.key} failed: {run.error}")
+            return f"{slot}.npz", path
+
+        return dict(await asyncio.gather(*(one(slot, part) for slot, part in instance.parts)))

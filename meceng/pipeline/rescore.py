@@ -1,0 +1,93 @@
+"""Grading outside a run: one program (``meceng evaluate``) or a run's saved programs again
+(``meceng rescore``), through the same task kinds as the flow, with no LLM call."""
+
+from __future__ import annotations
+
+import asyncio
+import datetime as dt
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from meceng.eval import EVALUATOR_VERSION
+from meceng.eval.aggregate import summarize
+from meceng.eval.chain import StageResult, Tolerances, Verdict
+from meceng.tasks.base import TaskInstance
+from meceng.tasks.registry import TaskRegistry, default_registry
+from meceng.tools.executor import Execution, ExecutionLimits
+
+from .evaluation import Evaluator
+from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
+from .rundir import record_key, write_atomic
+
+
+async def evaluate_program(
+    instance: TaskInstance,
+    code: str,
+    selected: tuple[str, ...] | None = None,
+    limits: ExecutionLimits | None = None,
+) -> tuple[Verdict, Execution, Execution]:
+    """Grade one program against the task instance, as if an LLM had written it. An assembly's
+    parts are made from their ground truths first (outside a run no LLM made them)."""
+    evaluator = Evaluator(2, limits or ExecutionLimits(), Tolerances())
+    if instance.kind == "assembly":
+        with tempfile.TemporaryDirectory(prefix="meceng-parts-") as folder:
+            files = await evaluator.ground_truth_parts(instance, Path(folder))
+            return await evaluator.evaluate(instance, code, selected, None, files=files)
+    kind: TaskKind = PartKind(evaluator) if instance.kind == "part" else RigidKind(evaluator)
+    graded = await kind.grade(instance, code, selected, None, keep=False)  # no components given: not applicable
+    return graded.verdict, graded.candidate, graded.reference
+
+
+async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
+                  workers: int = max(1, os.cpu_count() or 1)) -> Path:
+    """Grade the saved programs of a run again with the current evaluator; no LLM is called.
+
+    The LLM answers (selection, generation) stay as they were; stages, verdict, categories and
+    the summary are recomputed and the record says which evaluator graded it. run.json is
+    replaced atomically; the previous one is kept as run.previous.json.
+    """
+    registry = registry or default_registry()
+    run_path = run_dir / "run.json"
+    run = json.loads(run_path.read_text())
+    pipeline = run["settings"]["pipeline"]
+    evaluator = Evaluator(workers, ExecutionLimits(timeout_s=pipeline["exec_timeout_s"]),
+                          Tolerances(solution=pipeline["solution_tolerance"]),
+                          part_timeout_s=pipeline.get("part_timeout_s", 300.0))
+    saved_parts = {record_key(r): r for r in run["tasks"] if r.get("origin")}
+
+    def instance_of(record: dict[str, Any]) -> TaskInstance:
+        if record.get("origin"):  # a part drawn for an assembly: with the assembly's master values
+            slug, seed = record["origin"].rsplit("@", 1)
+            assembly = registry.get(slug).instance(int(seed))
+            return next(part for _, part in assembly.parts if part.key == record_key(record))
+        return registry.get(record["slug"]).instance(record["seed"])
+
+    def kind_of(instance: TaskInstance, record: dict[str, Any]) -> TaskKind:
+        if instance.kind == "part":
+            return PartKind(evaluator)
+        if instance.kind == "assembly":
+            files = {f"{slot}.npz": run_dir / saved_parts[part.key]["files"]["part"] for slot, part in instance.parts}
+            before = tuple(StageResult(**s) for s in record["stages"][:2])  # parts overall, MBS started
+            return AssemblyKind(evaluator, files, before, record.get("parts", {}), {})
+        return RigidKind(evaluator)
+
+    async def one(record: dict[str, Any]) -> dict[str, Any]:
+        if record.get("first_failure") == "infrastructure" or "generation" not in record:
+            return record  # also an assembly that never started: nothing was generated
+        instance = instance_of(record)
+        generation = record["generation"]
+        selected = tuple(record["selection"].get("names", ()))
+        graded = await kind_of(instance, record).grade(instance, generation.get("code"), selected,
+                                                       generation.get("error"), keep=False)
+        return {**record, **graded.verdict.to_json(), "execution": graded.candidate.summary(),
+                "reference_execution": graded.reference.summary(), "evaluator": EVALUATOR_VERSION}
+
+    run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))
+    run["summary"] = summarize(run["tasks"])
+    run["rescored"] = {"evaluator": EVALUATOR_VERSION, "at": dt.datetime.now(dt.UTC).isoformat()}
+    os.replace(run_path, run_dir / "run.previous.json")
+    write_atomic(run_path, json.dumps(run, indent=1, default=str))
+    return run_path

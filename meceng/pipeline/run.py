@@ -1,0 +1,126 @@
+"""The run loop: every selected task instance through its flow, concurrently, into the run folder.
+
+The instances run as coroutines inside a window: LLM calls are bounded per endpoint by the
+backend's scheduler and executions by the evaluator's worker slots, so inference of one task
+overlaps the evaluation of another and a run costs about max(LLM time, evaluation time). Every
+finished task is appended to the journal at once; one task's failure is recorded and never stops
+the run; ``--resume`` keeps what finished and does the rest (and what the server lost) again.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import datetime as dt
+import json
+import logging
+import time
+from pathlib import Path
+from typing import Any
+
+from meceng.agents.cache import CachedBackend, ResponseCache
+from meceng.agents.llm import Backend, make_backend
+from meceng.eval.chain import Tolerances
+from meceng.logs import get_logger
+from meceng.tasks.base import TaskInstance
+from meceng.tasks.registry import TaskRegistry, default_registry
+from meceng.tools.executor import ExecutionLimits, child_env
+from meceng.tools.warm import WarmPool
+
+from .evaluation import Evaluator
+from .flow import FlowContext, run_instance
+from .records import failed_record
+from .rundir import RunWriter, attach_run_log, record_key, safe_name, write_atomic
+from .settings import RunSettings
+
+log = get_logger("meceng.pipeline")
+
+
+def resumable(finished: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:
+    """The records a resumed run keeps, by instance key: the last record of a task wins; tasks
+    lost to infrastructure are done again, and so are the parts of an assembly that is."""
+    latest = {record_key(r): r for r in finished}
+    done = {k: r for k, r in latest.items() if r.get("first_failure") != "infrastructure"}
+    return {k: r for k, r in done.items() if not r.get("origin") or r["origin"] in done}
+
+
+async def run_benchmark(
+    settings: RunSettings,
+    registry: TaskRegistry | None = None,
+    backend: Backend | None = None,
+) -> Path:
+    """Run every selected task instance and write the run directory; returns run.json's path."""
+    registry = registry or default_registry()
+    models = registry.select(settings.levels, settings.only or None)
+    if not models:
+        raise ValueError(f"no task models for levels {settings.levels} / only {settings.only}")
+    if settings.executor not in ("fork", "subprocess"):
+        raise ValueError(f"unknown executor {settings.executor!r} (fork or subprocess)")
+    instances = registry.instances(models, settings.seed, settings.variations)
+    started = time.time()
+    stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
+    run_dir = settings.out / (settings.run_name or f"{stamp}_{safe_name(settings.llm.model)}")
+    run_dir.mkdir(parents=True, exist_ok=True)
+    writer = RunWriter(run_dir)
+    if writer.finished and not settings.resume:
+        raise ValueError(f"{run_dir} already holds a run; resume it with --resume {run_dir}")
+    if not (run_dir / "settings.json").exists():
+        write_atomic(run_dir / "settings.json", json.dumps(settings.to_json(), indent=1))
+    kept = resumable(writer.finished)
+    records: list[dict[str, Any]] = list(kept.values())
+    done_keys = {k for k, r in kept.items() if not r.get("origin")}
+    todo = [i for i in instances if i.key not in done_keys]
+    own_backend = backend is None
+    cache = ResponseCache(run_dir / "responses.jsonl")
+    backend = CachedBackend(backend or make_backend(settings.llm), cache, settings.llm)
+    pool = WarmPool(child_env()) if settings.executor == "fork" else None
+    evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
+                          Tolerances(solution=settings.solution_tolerance), pool=pool,
+                          part_timeout_s=settings.part_timeout_s)
+    ctx = FlowContext(backend, evaluator, settings, writer)
+    # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
+    window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) * 2 + settings.workers + 2)
+    log_handler = attach_run_log(run_dir / "log.jsonl")
+    if pool is not None:
+        pool_start = asyncio.ensure_future(pool.start())  # the fork server boots while the LLM works
+    log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(kept), model=settings.llm.model)
+
+    from meceng.progress import progress_bar
+
+    t0 = time.perf_counter()
+    with progress_bar(len(todo), f"{settings.llm.model}", enabled=settings.progress) as advance:
+
+        async def one(instance: TaskInstance) -> None:
+            async with window:
+                try:
+                    produced = await run_instance(instance, ctx)
+                except Exception as exc:
+                    log.error("task failed", task=instance.key, error=str(exc))
+                    produced = [failed_record(instance, exc)]
+            for record in produced:
+                writer.append(record)
+                records.append(record)
+            record = produced[-1]
+            log.info("task done", task=instance.key, overall=record["overall"],
+                     first_failure=record["first_failure"])
+            advance(record["overall"], sum(int(r.get("tokens", {}).get("completion", 0)) for r in produced))
+
+        try:
+            await asyncio.gather(*(one(i) for i in todo))
+        finally:
+            if pool is not None:
+                await asyncio.gather(pool_start, return_exceptions=True)
+                await pool.close()
+            if own_backend:
+                await backend.aclose()
+            else:
+                cache.close()
+    order = {inst.key: k for k, inst in enumerate(instances)}
+    # a part drawn for an assembly sits just before its assembly
+    records.sort(key=lambda r: (order.get(r.get("origin") or record_key(r), 0), 0 if r.get("origin") else 1))
+    extra = {"llm_calls": {"answered_from_cache": cache.hits, "requested": cache.misses},
+             "resumed_tasks": len(kept)}
+    path = writer.finish(settings.to_json(), records, started, time.perf_counter() - t0, extra)
+    log.info("run finished", run_json=str(path))
+    logging.getLogger("meceng").removeHandler(log_handler)
+    log_handler.close()
+    return path

@@ -1,0 +1,136 @@
+"""The run folder: journal.jsonl as tasks finish, programs/, parts/, settings.json and run.json.
+
+Everything a run writes goes through here, so the folder's layout is described in one place
+(README "A run writes ...") and read back by ``--resume``, ``rescore``, ``report`` and ``view``.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import json
+import logging
+import os
+import platform
+import re
+from pathlib import Path
+from typing import Any
+
+import structlog
+
+from meceng.agents.cache import read_jsonl
+from meceng.eval.aggregate import summarize
+from meceng.tasks.base import TaskInstance, program_header
+
+
+def record_key(record: dict[str, Any]) -> str:
+    """The key of the instance a record belongs to (a part drawn for an assembly names it)."""
+    own = f"{record['slug']}@{record['seed']}"
+    return f"{record['origin']}/{own}" if record.get("origin") else own
+
+
+def safe_name(text: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "-", text).strip("-") or "run"
+
+
+def write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
+
+
+def versions() -> dict[str, str]:
+    """Package versions from their metadata (importing NGSolve here would cost a third of a second)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {"python": platform.python_version(), "platform": platform.platform()}
+    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "networkx", "ollama",
+                    "pymeshlab"):
+        try:
+            out[package] = version(package)
+        except PackageNotFoundError:
+            out[package] = "not installed"
+    return out
+
+
+def gpu_telemetry() -> list[dict[str, str]]:
+    """nvidia-smi readings where a GPU exists; empty elsewhere."""
+    import shutil
+    import subprocess
+
+    if shutil.which("nvidia-smi") is None:
+        return []
+    try:
+        out = subprocess.run(
+            ["nvidia-smi", "--query-gpu=name,memory.total,memory.used,utilization.gpu,driver_version",
+             "--format=csv,noheader"], capture_output=True, text=True, timeout=10, check=True).stdout
+    except (OSError, subprocess.SubprocessError):
+        return []
+    keys = ("name", "memory_total", "memory_used", "utilization", "driver")
+    return [dict(zip(keys, (p.strip() for p in line.split(",")), strict=False)) for line in out.splitlines()]
+
+
+class RunWriter:
+    """The run directory: journal.jsonl as tasks finish, programs/, and run.json at the end."""
+
+    def __init__(self, run_dir: Path) -> None:
+        self.run_dir = run_dir
+        (run_dir / "programs").mkdir(parents=True, exist_ok=True)
+        self.journal_path = run_dir / "journal.jsonl"
+        self.finished = read_jsonl(self.journal_path)  # also cuts a line half-written by a kill
+        self._journal = open(self.journal_path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
+
+    def part_path(self, instance: TaskInstance) -> Path:
+        """Where a passing part's reduced FEM model is kept (for its assembly)."""
+        folder = self.run_dir / "parts"
+        folder.mkdir(parents=True, exist_ok=True)
+        return folder / f"{safe_name(instance.key.replace('/', '--'))}.npz"
+
+    def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
+        folder = self.run_dir / "programs" / instance.slug
+        folder.mkdir(parents=True, exist_ok=True)
+        stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
+        reference = folder / f"{stem}_reference.py"
+        write_atomic(reference, instance.reference_program)
+        files = {"reference": str(reference.relative_to(self.run_dir))}
+        if code is not None:
+            generated = folder / f"{stem}_generated.py"
+            header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
+                                    instance.description)
+            write_atomic(generated, f"{header}\n{code}")
+            files["generated"] = str(generated.relative_to(self.run_dir))
+        return files
+
+    def append(self, record: dict[str, Any]) -> None:
+        self._journal.write(json.dumps(record, default=str) + "\n")
+        self._journal.flush()
+        os.fsync(self._journal.fileno())
+
+    def finish(self, settings_json: dict[str, Any], records: list[dict[str, Any]], started: float, wall: float,
+               extra: dict[str, Any] | None = None) -> Path:
+        self._journal.close()
+        run = {
+            **(extra or {}),
+            "settings": settings_json,
+            "versions": versions(),
+            "gpu": gpu_telemetry(),
+            "started": dt.datetime.fromtimestamp(started, dt.UTC).isoformat(),
+            "wall_time_s": wall,
+            "summary": summarize(records),
+            "tasks": records,
+        }
+        path = self.run_dir / "run.json"
+        write_atomic(path, json.dumps(run, indent=1, default=str))
+        return path
+
+
+def attach_run_log(path: Path) -> logging.Handler:
+    """JSON lines of this run's log events into the run folder, for as long as the run lasts."""
+    handler = logging.FileHandler(path)
+    handler.setFormatter(structlog.stdlib.ProcessorFormatter(
+        processor=structlog.processors.JSONRenderer(),
+        foreign_pre_chain=[structlog.processors.add_log_level, structlog.processors.TimeStamper(fmt="iso")]))
+    logger = logging.getLogger("meceng")
+    logger.addHandler(handler)
+    if logger.level == logging.NOTSET or logger.level > logging.INFO:
+        logger.setLevel(logging.INFO)
+    return handler

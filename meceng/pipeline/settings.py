@@ -1,0 +1,78 @@
+"""The settings of a run: what defines it, written to settings.json and run.json as given."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_PART_CODE, DEFAULT_PART_SELECT, DEFAULT_SELECT
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """Everything that defines a run; written to run.json as given."""
+
+    llm: LLMSettings = field(default_factory=LLMSettings)
+    levels: tuple[str, ...] = ("1", "2")
+    only: tuple[str, ...] = ()
+    variations: int = 3
+    seed: int = 0
+    out: Path = Path("runs")
+    run_name: str | None = None
+    workers: int = max(1, os.cpu_count() or 1)
+    exec_timeout_s: float = 60.0
+    select_template: str = DEFAULT_SELECT
+    code_template: str = DEFAULT_CODE
+    solution_tolerance: float = 1e-5
+    progress: bool = True
+    resume: bool = False
+    executor: str = "fork"
+    agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code
+    max_rounds: int = 6
+    token_budget: int = 30000
+    part_select_template: str = DEFAULT_PART_SELECT
+    part_code_template: str = DEFAULT_PART_CODE
+    part_timeout_s: float = 300.0  # meshing + HCB of a part; the paper's parts take seconds
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
+        """Rebuild the settings a run was started with (for ``--resume``)."""
+        llm = dict(data["llm"])
+        llm["hosts"] = tuple(llm["hosts"])
+        pipeline = data["pipeline"]
+        return cls(
+            llm=LLMSettings(**llm), levels=tuple(pipeline["levels"]), only=tuple(pipeline["only"]),
+            variations=pipeline["variations"], seed=pipeline["seed"], out=out, run_name=run_name,
+            workers=pipeline["workers"], exec_timeout_s=pipeline["exec_timeout_s"],
+            solution_tolerance=pipeline["solution_tolerance"], select_template=data["prompt"]["select_template"],
+            code_template=data["prompt"]["code_template"], resume=True,
+            executor=pipeline.get("executor", "fork"), agent=pipeline.get("agent", "pipeline"),
+            max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
+            part_timeout_s=pipeline.get("part_timeout_s", 300.0),
+            part_select_template=data["prompt"].get("part_select_template", DEFAULT_PART_SELECT),
+            part_code_template=data["prompt"].get("part_code_template", DEFAULT_PART_CODE),
+        )
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "llm": self.llm.to_json(),
+            "pipeline": {
+                "executor": self.executor, "agent": self.agent, "max_rounds": self.max_rounds,
+                "token_budget": self.token_budget,
+                "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
+                "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
+                "solution_tolerance": self.solution_tolerance, "part_timeout_s": self.part_timeout_s,
+            },
+            "prompt": {"select_template": self.select_template, "code_template": self.code_template,
+                       "part_select_template": self.part_select_template,
+                       "part_code_template": self.part_code_template},
+        }
+
+    def templates(self, kind: str) -> tuple[str, str]:
+        """The (selection, code) prompt templates for a task kind: parts have their own."""
+        if kind == "part":
+            return self.part_select_template, self.part_code_template
+        return self.select_template, self.code_template
