@@ -101,8 +101,6 @@ class PartKind:
             "metrics_s": facts.pop("metrics_s", 0.0)}.items()})
         record["part"] = {**facts, "spec": instance.part.to_json(), "reference_times": reference.part_times,
                           "reference_nodes": (reference.part or {}).get("nodes")}
-        if instance.origin:
-            record["origin"] = instance.origin
 
 
 @dataclass

@@ -19,11 +19,14 @@ from meceng.tools.executor import Execution
 
 
 def _instance_fields(instance: TaskInstance) -> dict[str, Any]:
-    return {
+    fields = {
         "id": instance.task_id, "slug": instance.slug, "name": instance.name, "level": instance.level,
         "seed": instance.seed, "params": instance.params, "description": instance.description,
         "required_components": list(instance.required_components),
     }
+    if instance.origin:  # a part drawn for an assembly: the key it is resumed and sorted by
+        fields["origin"] = instance.origin
+    return fields
 
 
 def _tokens(*metas: dict[str, Any]) -> dict[str, int]:
