@@ -36,6 +36,15 @@ from meceng.eval.report import (
 )
 
 
+def _save(fig: Any, ax: Any, path: Path) -> None:
+    """A legend where something was drawn (a run with nothing graded draws nothing), then the PNG."""
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
 def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel: str) -> None:
     """Grouped bars with Wilson error bars: one group per model, one bar per key."""
     keys = list(dict.fromkeys(k for d in groups.values() for k in d))  # first-seen order
@@ -57,11 +66,7 @@ def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel
     ax.set_ylim(0, 105)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, path)
 
 
 def _line_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, xlabel: str) -> None:
@@ -79,11 +84,7 @@ def _line_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, xlabe
     ax.set_ylabel("overall success (%)")
     ax.set_ylim(0, 105)
     ax.set_title(title)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    _save(fig, ax, path)
 
 
 def _difficulty_plot(path: Path, rows: list[dict[str, Any]]) -> None:

@@ -8,8 +8,14 @@ context and for the 'choose components' metric.
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+
+
+def text_block(text: str) -> str:
+    """A component text written indented in its module, as the model reads it."""
+    return textwrap.dedent(text).strip()
 
 
 @dataclass(frozen=True)

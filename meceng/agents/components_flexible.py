@@ -8,16 +8,9 @@ loads act on those markers as on rigid bodies. Every example loads the same save
 
 from __future__ import annotations
 
-import textwrap
-
-from meceng.agents.catalog import Component
+from meceng.agents.catalog import Component, text_block
 from meceng.tasks.base import PREAMBLE, SimSettings
 from meceng.tasks.part_base import STEEL, fem_block
-
-
-def _text(text: str) -> str:
-    return textwrap.dedent(text).strip()
-
 
 #: Every example loads the same saved beam (0.5 x 0.04 x 0.02 m steel, interfaces 'left' and 'right');
 #: the catalog test makes it with the part pipeline first.
@@ -40,13 +33,13 @@ shape.faces.Max(X).name = 'right'
 
 def _example(model: str, end_time: float = 0.05, steps: int = 50) -> str:
     sim = SimSettings(end_time=end_time, steps=steps)
-    return f"{PREAMBLE}\n{_LOAD_BEAM}\n{_text(model)}\n\nmbs.Assemble()\n\n{sim.block()}"
+    return f"{PREAMBLE}\n{_LOAD_BEAM}\n{text_block(model)}\n\nmbs.Assemble()\n\n{sim.block()}"
 
 
 LOAD_FEM_PART = Component(
     name="LoadFEMPart",
     description="load a saved flexible machine part (meshed, reduced FEM model) from its .npz file",
-    context=_text("""
+    context=text_block("""
         from exudyn.FEM import FEMinterface
         femArm = FEMinterface()
         femArm.LoadFromFile('arm.npz')      # the part's name as given in the Part Loading Info
@@ -66,7 +59,7 @@ FLEXIBLE_BODY = Component(
         "add a loaded flexible part to the system as a reduced-order flexible body (floating frame of "
         "reference); creates one marker per named interface"
     ),
-    context=_text("""
+    context=text_block("""
         arm = mbs.CreateFFRFReducedOrderObject('arm', femArm, referencePosition=[x, y, z],
                                                referenceRotationMatrix=np.eye(3), gravity=[0, 0, -9.81],
                                                initialVelocity=[0, 0, 0], initialAngularVelocity=[0, 0, 0])
@@ -92,7 +85,7 @@ INTERFACE_JOINT = Component(
         "joint at a flexible part's interface: clamp it to ground, or a revolute / prismatic joint to the "
         "ground or to another part's interface"
     ),
-    context=_text("""
+    context=text_block("""
         oGround = mbs.CreateGround()
         mGround = mbs.AddMarker(MarkerBodyRigid(bodyNumber=oGround, localPosition=[x, y, z]))  # joint point
         mbs.AddObject(GenericJoint(markerNumbers=[mGround, arm['arm:left']], constrainedAxes=[1, 1, 1, 1, 1, 1]))
@@ -116,7 +109,7 @@ INTERFACE_JOINT = Component(
 INTERFACE_LOAD = Component(
     name="InterfaceLoad",
     description="force or torque acting on a flexible part at one of its interfaces",
-    context=_text("""
+    context=text_block("""
         mbs.AddLoad(Force(markerNumber=arm['arm:right'], loadVector=[0, 0, -F]))    # force in N, global frame
         mbs.AddLoad(Torque(markerNumber=rotor['rotor:hub'], loadVector=[T, 0, 0]))  # torque in Nm
         - The load acts on the interface marker (spread over the interface's nodes).

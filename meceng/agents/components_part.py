@@ -9,22 +9,16 @@ Every example is a complete part program in the style of the ground truths in
 
 from __future__ import annotations
 
-import textwrap
-
-from meceng.agents.catalog import Component
+from meceng.agents.catalog import Component, text_block
 from meceng.tasks.part_base import PART_PREAMBLE, STEEL, fem_block
 
 
-def _text(text: str) -> str:
-    return textwrap.dedent(text).strip()
-
-
 def _geometry(code: str) -> str:
-    return f"{PART_PREAMBLE}\n{_text(code)}\n"
+    return f"{PART_PREAMBLE}\n{text_block(code)}\n"
 
 
 def _part(code: str, interfaces: tuple[str, ...] = ("left", "right"), maxh: float = 0.02) -> str:
-    return f"{PART_PREAMBLE}\n{_text(code)}\n\n{fem_block(maxh, STEEL, interfaces)}"
+    return f"{PART_PREAMBLE}\n{text_block(code)}\n\n{fem_block(maxh, STEEL, interfaces)}"
 
 
 _BEAM = """
@@ -36,7 +30,7 @@ _BEAM = """
 BOX = Component(
     name="Box",
     description="cuboid solid between two corner points (plates, blocks, bars, feet)",
-    context=_text("""
+    context=text_block("""
         shape = Box(Pnt(x0, y0, z0), Pnt(x1, y1, z1))
         - Axis-aligned cuboid between the corner with the smallest and the one with the largest coordinates.
         - A box centred at c with size (a, b, h): Box(Pnt(cx-a/2, cy-b/2, cz-h/2), Pnt(cx+a/2, cy+b/2, cz+h/2)).
@@ -52,7 +46,7 @@ BOX = Component(
 CYLINDER = Component(
     name="Cylinder",
     description="circular cylinder solid along an axis (shafts, pins, bores, discs, knuckles, towers)",
-    context=_text("""
+    context=text_block("""
         shape = Cylinder(Pnt(x, y, z), axisDirection, r=radius, h=length)
         - Pnt is the centre of the start face; axisDirection is X, Y, Z or Vec(dx, dy, dz); the cylinder
           extends by h along the direction.
@@ -70,7 +64,7 @@ CYLINDER = Component(
 SPHERE = Component(
     name="Sphere",
     description="sphere solid (balls, spherical ends, counterweights)",
-    context=_text("""
+    context=text_block("""
         shape = Sphere(Pnt(x, y, z), r=radius)
     """),
     example=_geometry("""
@@ -85,7 +79,7 @@ EXTRUDE = Component(
         "a planar face (rectangle, circle, polygon drawn on a work plane) extruded to a solid; profiles, "
         "keyways, ribs, L-shapes; can also make boxes and cylinders"
     ),
-    context=_text("""
+    context=text_block("""
         wp = WorkPlane(Axes((x0, y0, z0), n=normal, h=xDirectionOfPlane))
         face = wp.Rectangle(a, b).Face()        # corner at the plane origin, a along h, b along n x h
         face = wp.Circle(u, v, r).Face()        # circle centred at plane coordinates (u, v)
@@ -109,7 +103,7 @@ EXTRUDE = Component(
 BOOLEAN_FUSE = Component(
     name="BooleanFuse",
     description="union of two solids into one part (shaft with disc, plate with feet, leaf with knuckle)",
-    context=_text("""
+    context=text_block("""
         shape = solidA + solidB
         - The solids must touch or overlap; the result is one solid whose coplanar faces may be merged.
         - Name interface faces only after all booleans: fusing and cutting create new faces and drop names.
@@ -126,7 +120,7 @@ BOOLEAN_FUSE = Component(
 BOOLEAN_CUT = Component(
     name="BooleanCut",
     description="subtract one solid from another (bores, holes, keyways, slots, grooves, hollow profiles)",
-    context=_text("""
+    context=text_block("""
         shape = solidA - solidB
         - A through hole: subtract a cylinder that spans the wall exactly (or slightly more).
         - A keyway: extrude the keyway's base face and subtract the extruded solid from the shaft.
@@ -142,7 +136,7 @@ BOOLEAN_CUT = Component(
 TRANSFORM = Component(
     name="Transform",
     description="translate or rotate a solid (place repeated features, tilt a part into the stated frame)",
-    context=_text("""
+    context=text_block("""
         moved = solid.Move((dx, dy, dz))                       # translation, returns a new shape
         turned = solid.Rotate(Axis((x, y, z), direction), angleInDegrees)   # rotation about an axis
         - Both return a new solid; the original is unchanged. Angles are in DEGREES.
@@ -161,7 +155,7 @@ TRANSFORM = Component(
 FILLET = Component(
     name="Fillet",
     description="round edges of a solid with a given radius",
-    context=_text("""
+    context=text_block("""
         shape = shape.MakeFillet(edges, r)
         - edges: a list of edges, e.g. shape.edges.Max(Z) (one edge), [e for e in shape.edges if ...], or a
           filtered list such as shape.edges[X > 0.1]; select exactly the edges the description names.
@@ -179,7 +173,7 @@ FILLET = Component(
 CHAMFER = Component(
     name="Chamfer",
     description="bevel edges of a solid with a given distance (45 degree chamfers)",
-    context=_text("""
+    context=text_block("""
         shape = shape.MakeChamfer(edges, d)
         - edges: list of the edges to bevel (see Fillet for selecting edges); d: chamfer distance on both faces.
         - A chamfer removes d^2 / 2 of cross section per unit edge length. Name faces afterwards.
@@ -196,7 +190,7 @@ CHAMFER = Component(
 NAMED_FACES = Component(
     name="NamedFaces",
     description="give faces names; the named faces are the part's interfaces (joints, supports, loads)",
-    context=_text("""
+    context=text_block("""
         shape.faces.Min(X).name = 'left'            # face with the smallest x (also Max, Y, Z)
         shape.faces.Nearest(Pnt(x, y, z)).name = 'bore'   # face closest to a point (e.g. on a bore surface)
         for f in shape.faces: ...                   # f.center, f.mass (area), f.bounding_box to test faces
@@ -217,7 +211,7 @@ NAMED_FACES = Component(
 GENERATE_MESH = Component(
     name="GenerateMesh",
     description="tetrahedral finite element mesh of the solid with a hard-coded maximum element size maxh",
-    context=_text("""
+    context=text_block("""
         mesh = ngs.Mesh(OCCGeometry(shape).GenerateMesh(maxh=0.01))
         - Hard-code maxh as a number literal in the call (the value given in the description). Programs
           without a literal maxh are not run.
@@ -230,7 +224,7 @@ GENERATE_MESH = Component(
 IMPORT_MESH = Component(
     name="ImportMeshToFEM",
     description="import the mesh into Exudyn's FEMinterface with material (E, nu, rho) and the interfaces",
-    context=_text("""
+    context=text_block("""
         from exudyn.FEM import FEMinterface
         fem = FEMinterface()
         fem.ImportMeshFromNGsolve(mesh, density=rho, youngsModulus=E, poissonsRatio=nu, meshOrder=1,
@@ -248,7 +242,7 @@ IMPORT_MESH = Component(
 HCB_MODES = Component(
     name="HCBModes",
     description="Hurty-Craig-Bampton reduction with static modes at the interfaces and eigenmodes",
-    context=_text("""
+    context=text_block("""
         from exudyn.FEM import HCBstaticModeSelection
         boundaryNodes, boundaryWeights = fem.GetBoundaryNodeSetsAsLists()
         fem.ComputeHurtyCraigBamptonModes(boundaryNodesList=boundaryNodes, nEigenModes=6,
@@ -266,7 +260,7 @@ HCB_MODES = Component(
 EIGENFREQUENCIES = Component(
     name="EigenFrequencies",
     description="eigenfrequencies of the reduced part in Hz (to check the part)",
-    context=_text("""
+    context=text_block("""
         frequencies = fem.GetEigenFrequenciesHz()   # after ComputeHurtyCraigBamptonModes
     """),
     example=_part(_BEAM) + "frequencies = fem.GetEigenFrequenciesHz()\n",
