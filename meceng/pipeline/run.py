@@ -29,7 +29,7 @@ from meceng.tools.warm import WarmPool
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
 from .records import failed_record
-from .rundir import RunWriter, attach_run_log, record_key, safe_name, write_atomic
+from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
 from .settings import RunSettings
 
 log = get_logger("meceng.pipeline")
@@ -66,7 +66,8 @@ async def run_benchmark(
     if not (run_dir / "settings.json").exists():
         write_atomic(run_dir / "settings.json", json.dumps(settings.to_json(), indent=1))
     kept = resumable(writer.finished)
-    records: list[dict[str, Any]] = list(kept.values())
+    records: list[dict[str, Any]] = [slim_record(r) for r in kept.values()]  # full records stay in the journal
+    writer.finished = []
     done_keys = {k for k, r in kept.items() if not r.get("origin")}
     todo = [i for i in instances if i.key not in done_keys]
     own_backend = backend is None
@@ -98,7 +99,7 @@ async def run_benchmark(
                     produced = [failed_record(instance, exc)]
             for record in produced:
                 writer.append(record)
-                records.append(record)
+                records.append(slim_record(record))
             record = produced[-1]
             log.info("task done", task=instance.key, overall=record["overall"],
                      first_failure=record["first_failure"])

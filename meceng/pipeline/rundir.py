@@ -107,8 +107,11 @@ class RunWriter:
 
     def finish(self, settings_json: dict[str, Any], records: list[dict[str, Any]], started: float, wall: float,
                extra: dict[str, Any] | None = None) -> Path:
+        """Write run.json: the summary of ``records`` and, in their order, each one's full record as
+        the journal holds it. ``records`` may be slim (see ``slim_record``): the full ones are copied
+        line by line from the journal rather than held in memory for the whole run."""
         self._journal.close()
-        run = {
+        head = {
             **(extra or {}),
             "settings": settings_json,
             "versions": versions(),
@@ -116,11 +119,49 @@ class RunWriter:
             "started": dt.datetime.fromtimestamp(started, dt.UTC).isoformat(),
             "wall_time_s": wall,
             "summary": summarize(records),
-            "tasks": records,
         }
+        lines = self._journal_lines({record_key(r) for r in records})
         path = self.run_dir / "run.json"
-        write_atomic(path, json.dumps(run, indent=1, default=str))
+        tmp = path.with_name(path.name + ".tmp")
+        with tmp.open("w", encoding="utf-8") as out:
+            out.write(json.dumps(head, indent=1, default=str)[:-2] + ',\n "tasks": [\n')
+            out.write(",\n".join(lines[record_key(r)] for r in records))
+            out.write("\n ]\n}\n")
+        os.replace(tmp, path)
         return path
+
+    def _journal_lines(self, keys: set[str]) -> dict[str, str]:
+        """The last journal line of each key (a task done again after a resume wins)."""
+        latest: dict[str, str] = {}
+        with self.journal_path.open(encoding="utf-8") as journal:
+            for line in journal:
+                line = line.rstrip("\n")
+                try:
+                    key = record_key(json.loads(line))
+                except (ValueError, KeyError):
+                    continue
+                if key in keys:
+                    latest[key] = line
+        return latest
+
+
+#: what the summary reads of an agent's block; the transcript and programs stay in the journal
+_AGENT_SUMMARY_KEYS = ("first_overall", "first_failure", "rounds", "tool_calls", "completion_tokens",
+                       "prompt_tokens", "stop_reason")
+
+
+def slim_record(record: dict[str, Any]) -> dict[str, Any]:
+    """What a run keeps in memory of a finished task: enough for the summary and the record's key;
+    prompts, answers, programs, executions and transcripts are in the journal already."""
+    slim = {k: v for k, v in record.items() if k not in (
+        "description", "params", "selection", "generation", "execution", "reference_execution", "differences",
+        "agent", "traceback", "part")}
+    for step in ("selection", "generation"):
+        if step in record:
+            slim[step] = {"meta": {k: v for k, v in record[step].get("meta", {}).items() if k != "thinking"}}
+    if "agent" in record:
+        slim["agent"] = {k: record["agent"].get(k) for k in _AGENT_SUMMARY_KEYS}
+    return slim
 
 
 def attach_run_log(path: Path) -> logging.Handler:

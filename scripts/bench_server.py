@@ -1,0 +1,102 @@
+#!/usr/bin/env python
+"""A fake LLM server for the throughput benchmark, in its own process so that none of its CPU is
+counted as the harness's: Ollama's ``/api/chat`` wire format, ``--slots`` requests served at once
+(more wait in the server's queue, as with continuous batching at its limit), and a latency drawn per
+request from a realistic distribution — selection short, code long, a heavy tail. It answers with the
+ground truth, so the harness grades every task as it would a perfect model.
+
+    python scripts/bench_server.py --slots 64 --levels 1,2 --variations 20 --seed 3000
+
+Prints ``listening http://127.0.0.1:PORT`` once it serves; stops on SIGTERM or SIGINT.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import hashlib
+import json
+import math
+import signal
+import sys
+
+from aiohttp import web
+
+from meceng.agents.prompts import gold_code, gold_selection
+from meceng.tasks.registry import default_registry
+
+
+def latency(purpose: str, key: str, scale: float) -> float:
+    """Seconds for one request, the same for the same request in every run: log-normal around a
+    median of 1.5 s (selection) or 6 s (code), 3 % of the requests 4-10 times longer, and none
+    longer than 60 s (an answer limit of 2048 tokens at ~35 tokens/s)."""
+    digest = hashlib.sha256(f"{purpose}|{key}".encode()).digest()
+    u1, u2, u3, u4 = (int.from_bytes(digest[i:i + 4], "big") / 2**32 for i in (0, 4, 8, 12))
+    normal = math.sqrt(-2 * math.log(max(u1, 1e-12))) * math.cos(2 * math.pi * u2)
+    median, sigma = (1.5, 0.4) if purpose == "select" else (6.0, 0.5)
+    seconds = median * math.exp(sigma * normal)
+    if u3 < 0.03:
+        seconds *= 4 + 6 * u4
+    return scale * min(seconds, 60.0)
+
+
+def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, scale: float) -> web.Application:
+    registry = default_registry()
+    instances = registry.instances(registry.select(levels, None), seed, variations)
+    by_description = sorted(instances, key=lambda i: -len(i.description))
+    gate = asyncio.Semaphore(slots)
+
+    async def chat(request: web.Request) -> web.Response:
+        body = json.loads(await request.read())
+        prompt = body["messages"][-1]["content"]
+        instance = next((i for i in by_description if i.description in prompt), None)
+        if instance is None:
+            return web.json_response({"error": "unknown task"}, status=400)
+        purpose = "select" if "<components>" in prompt else "code"
+        async with gate:
+            await asyncio.sleep(latency(purpose, instance.key, scale))
+        answer = (gold_selection(instance.required_components) if purpose == "select"
+                  else gold_code(instance.reference_program))
+        return web.json_response({
+            "model": body.get("model", "bench"), "created_at": "2026-11-24T00:00:00Z",
+            "message": {"role": "assistant", "content": answer}, "done": True, "done_reason": "stop",
+            "total_duration": 1, "load_duration": 0, "prompt_eval_count": len(prompt) // 4,
+            "prompt_eval_duration": 1, "eval_count": len(answer) // 4, "eval_duration": 1,
+        })
+
+    app = web.Application(client_max_size=16 * 2**20)
+    app.router.add_post("/api/chat", chat)
+    return app
+
+
+async def serve(args: argparse.Namespace) -> None:
+    app = build_app(args.slots, tuple(args.levels.split(",")), args.variations, args.seed, args.scale)
+    runner = web.AppRunner(app, access_log=None)
+    await runner.setup()
+    site = web.TCPSite(runner, "127.0.0.1", args.port, backlog=4096)
+    await site.start()
+    port = site._server.sockets[0].getsockname()[1]  # type: ignore[union-attr]
+    sys.stdout.write(f"listening http://127.0.0.1:{port}\n")
+    sys.stdout.flush()
+    stop = asyncio.Event()
+    loop = asyncio.get_running_loop()
+    for sig in (signal.SIGTERM, signal.SIGINT):
+        loop.add_signal_handler(sig, stop.set)
+    await stop.wait()
+    await runner.cleanup()
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--port", type=int, default=0)
+    parser.add_argument("--slots", type=int, default=64)
+    parser.add_argument("--levels", default="1,2")
+    parser.add_argument("--variations", type=int, default=20)
+    parser.add_argument("--seed", type=int, default=3000)
+    parser.add_argument("--scale", type=float, default=1.0, help="multiplies every latency")
+    asyncio.run(serve(parser.parse_args()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
