@@ -4,10 +4,12 @@
 1. isolation overhead per program, warm fork server vs cold interpreter (empty program and a
    typical level 1 task), and the ratio;
 2. evaluation throughput (tasks/s) with 1 worker and with all cores, and the scaling ratio;
-3. scheduler efficiency against a fake Ollama with N slots and fixed latency: achieved requests/s
-   divided by N / latency, for N = 1, 4, 16;
+3. scheduler efficiency against a fake Ollama (its own process) with N slots and a fixed latency of
+   2 s and 0.5 s: achieved requests/s divided by N / latency, for N = 1, 4, 16, 64, 256;
 4. pipelining: wall time of a run with simulated LLM latency divided by
-   max(LLM-only time, evaluation-only time).
+   max(LLM-only time, evaluation-only time);
+5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
+   realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory.
 
     python scripts/bench.py [--json FILE] [--quick]
 """
@@ -25,11 +27,13 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import bench_scale
 from fake_ollama import FakeOllama, chat_reply
 
 from meceng.agents.catalog import rigid_catalog
-from meceng.agents.llm import ChatRequest, LLMSettings, OllamaBackend, user_messages
+from meceng.agents.llm import LLMSettings, OllamaBackend
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.steps import choose_components, generate_code
 from meceng.eval.chain import Tolerances
@@ -109,28 +113,6 @@ async def throughput(variations: int) -> dict[str, float]:
             "scaling_all_cores": many / one, "cores": cores, "hardware_scaling": hardware_scaling(cores)}
 
 
-async def scheduler_efficiency(latency: float, waves: int) -> dict[str, float]:
-    out: dict[str, float] = {}
-    for slots in (1, 4, 16):
-        gate = asyncio.Semaphore(slots)
-
-        async def responder(body, gate=gate):
-            async with gate:  # the server's parallel slots; more requests would queue
-                await asyncio.sleep(latency)
-            return 200, chat_reply("ok"), {}
-
-        async with FakeOllama(responder) as server:
-            backend = OllamaBackend(LLMSettings(model="bench", backend="ollama", hosts=(server.url,),
-                                                batch_size=slots))
-            requests = [ChatRequest(user_messages(f"request {k}"), "select", f"t@{k}") for k in range(slots * waves)]
-            t0 = time.perf_counter()
-            await asyncio.gather(*(backend.chat(r) for r in requests))
-            wall = time.perf_counter() - t0
-            await backend.aclose()
-        out[str(slots)] = (len(requests) / wall) / (slots / latency)
-    return out
-
-
 async def pipelining(latency: float, variations: int) -> dict[str, float]:
     registry = default_registry()
     models = registry.select(None, FIRST_TWELVE)
@@ -187,16 +169,25 @@ async def main_async(quick: bool) -> dict[str, object]:
           f"{cores} workers {tp[f'tasks_per_s_{cores}']:.2f} tasks/s -> scaling {tp['scaling_all_cores']:.2f}x "
           f"(the machine itself: a pure-CPU loop in {cores} processes scales {tp['hardware_scaling']:.2f}x)",
           flush=True)
-    sched = await scheduler_efficiency(latency=0.5, waves=3 if quick else 5)
-    print("3. scheduler efficiency (achieved req/s / (N / latency)): "
-          + ", ".join(f"N={n}: {v:.3f}" for n, v in sched.items()), flush=True)
+    sched = {}
+    for latency in (2.0, 0.5):
+        sched[f"{latency:g}s"] = await asyncio.to_thread(
+            bench_scale.scheduler_efficiency, latency, (1, 4, 16, 64, 256), 3 if quick else 5)
+        print(f"3. scheduler efficiency at {latency:g} s latency (achieved req/s / (N / latency), server in its own "
+              "process): " + ", ".join(f"N={n}: {v:.3f}" for n, v in sched[f"{latency:g}s"].items()), flush=True)
     pipe = await pipelining(latency=0.15, variations=1 if quick else 3)
     print(f"4. pipelining: LLM only {pipe['llm_only_s']:.1f} s, evaluation only {pipe['evaluation_only_s']:.1f} s, "
           f"pipelined run {pipe['pipelined_s']:.1f} s -> ratio {pipe['pipelining_ratio']:.2f}", flush=True)
+    scale_args = bench_scale.build_parser().parse_args(["--variations", "2" if quick else "20"])
+    print("5. server scale:", flush=True)
+    scale = await asyncio.to_thread(bench_scale.server_scale, scale_args)
+    print("5. " + bench_scale.report(scale), flush=True)
     results.update(
         cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
         hardware_scaling=tp["hardware_scaling"],
         scheduler_efficiency=sched, pipelining_ratio=pipe["pipelining_ratio"], cores=cores,
+        server_scale=scale, run_over_llm_only=scale["run_over_llm_only"],
+        parent_cpu_ms_per_task=scale["parent_cpu_ms_per_task"], parent_peak_rss_mb=scale["parent_peak_rss_mb"],
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
     )

@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from meceng.agents.catalog import rigid_catalog
-from meceng.agents.llm import LLMSettings, make_backend
+from meceng.agents.llm import ChatRequest, LLMSettings, make_backend, user_messages
 from meceng.agents.steps import choose_components, generate_code
 from meceng.eval.chain import Tolerances
 from meceng.pipeline import Evaluator, RunSettings, run_benchmark
@@ -102,6 +102,48 @@ def harness(mode: str, url: str, slots: int, workers: int, variations: int, seed
             "parent_peak_rss_mb": after.ru_maxrss / 1024}
 
 
+class FakeServer:
+    """``bench_server.py`` in its own process, for as long as the ``with`` block lasts."""
+
+    def __init__(self, *args: str) -> None:
+        self.args = args
+        self.url = ""
+
+    def __enter__(self) -> FakeServer:
+        self.proc = subprocess.Popen([sys.executable, str(HERE / "bench_server.py"), *self.args],
+                                     stdout=subprocess.PIPE, text=True)
+        assert self.proc.stdout is not None
+        self.url = self.proc.stdout.readline().split()[-1]
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.proc.terminate()
+        self.proc.wait(timeout=30)
+
+
+async def _efficiency(url: str, slots: int, latency: float, waves: int) -> float:
+    backend = make_backend(_llm(url, slots))
+    requests = [ChatRequest(user_messages(f"request {k}"), "select", f"t@{k}") for k in range(slots * waves)]
+    try:
+        t0 = time.perf_counter()
+        await asyncio.gather(*(backend.chat(r) for r in requests))
+        wall = time.perf_counter() - t0
+    finally:
+        await backend.aclose()
+    return (len(requests) / wall) / (slots / latency)
+
+
+def scheduler_efficiency(latency: float, slots: tuple[int, ...] = (1, 4, 16, 64, 256),
+                         waves: int = 5) -> dict[str, float]:
+    """Achieved requests/s over what N slots of ``latency`` seconds allow, the server in its own process
+    (a server in the harness's event loop would charge its own CPU to the harness at high N)."""
+    out: dict[str, float] = {}
+    for n in slots:
+        with FakeServer("--slots", str(n), "--fixed-latency", str(latency)) as server:
+            out[str(n)] = asyncio.run(_efficiency(server.url, n, latency, waves))
+    return out
+
+
 def _measure(mode: str, url: str, args: argparse.Namespace) -> dict[str, Any]:
     command = [sys.executable, str(Path(__file__).resolve()), "--harness", mode, "--url", url,
                "--slots", str(args.slots), "--workers", str(args.workers), "--variations", str(args.variations),
@@ -113,21 +155,14 @@ def _measure(mode: str, url: str, args: argparse.Namespace) -> dict[str, Any]:
 
 
 def server_scale(args: argparse.Namespace) -> dict[str, Any]:
-    server = subprocess.Popen(
-        [sys.executable, str(HERE / "bench_server.py"), "--slots", str(args.slots), "--levels", ",".join(LEVELS),
-         "--variations", str(args.variations), "--seed", str(args.seed), "--scale", str(args.scale)],
-        stdout=subprocess.PIPE, text=True)
-    try:
-        assert server.stdout is not None
-        url = server.stdout.readline().split()[-1]
-        llm_only = _measure("llm-only", url, args)
-        print(f"   LLM only: {llm_only['wall_s']:.1f} s for {llm_only['tasks']} tasks", flush=True)
-        evaluation = _measure("evaluation-only", url, args)
-        print(f"   evaluation only: {evaluation['wall_s']:.1f} s ({args.workers} workers)", flush=True)
-        run = _measure("run", url, args)
-    finally:
-        server.terminate()
-        server.wait(timeout=30)
+    with FakeServer("--slots", str(args.slots), "--levels", ",".join(LEVELS), "--variations", str(args.variations),
+                    "--seed", str(args.seed), "--scale", str(args.scale)) as server:
+        llm_only = _measure("llm-only", server.url, args)
+        sys.stdout.write(f"   LLM only: {llm_only['wall_s']:.1f} s for {llm_only['tasks']} tasks\n")
+        evaluation = _measure("evaluation-only", server.url, args)
+        sys.stdout.write(f"   evaluation only: {evaluation['wall_s']:.1f} s ({args.workers} workers)\n")
+        sys.stdout.flush()
+        run = _measure("run", server.url, args)
     tasks = run["tasks"]
     return {
         "tasks": tasks, "slots": args.slots, "workers": args.workers, "llm_only_s": llm_only["wall_s"],

@@ -40,15 +40,33 @@ def latency(purpose: str, key: str, scale: float) -> float:
     return scale * min(seconds, 60.0)
 
 
-def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, scale: float) -> web.Application:
-    registry = default_registry()
-    instances = registry.instances(registry.select(levels, None), seed, variations)
-    by_description = sorted(instances, key=lambda i: -len(i.description))
+def _reply(model: str, prompt: str, answer: str) -> web.Response:
+    return web.json_response({
+        "model": model, "created_at": "2026-11-24T00:00:00Z",
+        "message": {"role": "assistant", "content": answer}, "done": True, "done_reason": "stop",
+        "total_duration": 1, "load_duration": 0, "prompt_eval_count": len(prompt) // 4,
+        "prompt_eval_duration": 1, "eval_count": len(answer) // 4, "eval_duration": 1,
+    })
+
+
+def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, scale: float,
+              fixed_latency: float | None = None) -> web.Application:
+    """``fixed_latency``: every request takes exactly that long and is answered 'ok' (for measuring
+    the client's scheduler alone); otherwise the ground truth after a drawn latency."""
     gate = asyncio.Semaphore(slots)
+    by_description: list = []
+    if fixed_latency is None:
+        registry = default_registry()
+        instances = registry.instances(registry.select(levels, None), seed, variations)
+        by_description = sorted(instances, key=lambda i: -len(i.description))
 
     async def chat(request: web.Request) -> web.Response:
         body = json.loads(await request.read())
         prompt = body["messages"][-1]["content"]
+        if fixed_latency is not None:
+            async with gate:
+                await asyncio.sleep(fixed_latency)
+            return _reply(body.get("model", "bench"), prompt, "ok")
         instance = next((i for i in by_description if i.description in prompt), None)
         if instance is None:
             return web.json_response({"error": "unknown task"}, status=400)
@@ -57,12 +75,7 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
             await asyncio.sleep(latency(purpose, instance.key, scale))
         answer = (gold_selection(instance.required_components) if purpose == "select"
                   else gold_code(instance.reference_program))
-        return web.json_response({
-            "model": body.get("model", "bench"), "created_at": "2026-11-24T00:00:00Z",
-            "message": {"role": "assistant", "content": answer}, "done": True, "done_reason": "stop",
-            "total_duration": 1, "load_duration": 0, "prompt_eval_count": len(prompt) // 4,
-            "prompt_eval_duration": 1, "eval_count": len(answer) // 4, "eval_duration": 1,
-        })
+        return _reply(body.get("model", "bench"), prompt, answer)
 
     app = web.Application(client_max_size=16 * 2**20)
     app.router.add_post("/api/chat", chat)
@@ -70,7 +83,8 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
 
 
 async def serve(args: argparse.Namespace) -> None:
-    app = build_app(args.slots, tuple(args.levels.split(",")), args.variations, args.seed, args.scale)
+    app = build_app(args.slots, tuple(args.levels.split(",")), args.variations, args.seed, args.scale,
+                    args.fixed_latency)
     runner = web.AppRunner(app, access_log=None)
     await runner.setup()
     site = web.TCPSite(runner, "127.0.0.1", args.port, backlog=4096)
@@ -94,6 +108,7 @@ def main() -> int:
     parser.add_argument("--variations", type=int, default=20)
     parser.add_argument("--seed", type=int, default=3000)
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies every latency")
+    parser.add_argument("--fixed-latency", type=float, default=None, help="seconds per request, answer 'ok'")
     asyncio.run(serve(parser.parse_args()))
     return 0
 
