@@ -43,7 +43,7 @@ def versions() -> dict[str, str]:
     from importlib.metadata import PackageNotFoundError, version
 
     out = {"python": platform.python_version(), "platform": platform.platform()}
-    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "networkx", "ollama",
+    for package in ("meceng", "exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "networkx", "aiohttp",
                     "pymeshlab"):
         try:
             out[package] = version(package)
