@@ -172,7 +172,7 @@ async def main_async(quick: bool) -> dict[str, object]:
     sched = {}
     for latency in (2.0, 0.5):
         sched[f"{latency:g}s"] = await asyncio.to_thread(
-            bench_scale.scheduler_efficiency, latency, (1, 4, 16, 64, 256), 3 if quick else 5)
+            bench_scale.scheduler_efficiency, latency, (1, 4, 16, 64, 256), 3 if quick else 10)
         print(f"3. scheduler efficiency at {latency:g} s latency (achieved req/s / (N / latency), server in its own "
               "process): " + ", ".join(f"N={n}: {v:.3f}" for n, v in sched[f"{latency:g}s"].items()), flush=True)
     pipe = await pipelining(latency=0.15, variations=1 if quick else 3)
