@@ -44,6 +44,11 @@ class ReferenceCache:
     async def get(self, instance: TaskInstance) -> Execution:
         return await asyncio.shield(self.start(instance))
 
+    def discard(self, key: str) -> None:
+        """Forget an instance's execution once its task is graded: a reference holds the whole
+        system and trajectory (a 1000-task run kept ~300 MB of them to the end)."""
+        self._tasks.pop(key, None)
+
 
 def not_run(code_error: str | None) -> Execution:
     """The candidate 'execution' of an answer that had no program to run."""
@@ -72,6 +77,12 @@ class Evaluator:
 
     def limits_for(self, instance: TaskInstance) -> ExecutionLimits:
         return self.part_limits if instance.kind == "part" else self.limits
+
+    def release(self, instance: TaskInstance) -> None:
+        """The task is graded: its ground-truth executions are not needed again in this run."""
+        self.references.discard(instance.key)
+        for key in [k for k in self._remeshed if k[0] == instance.key]:
+            del self._remeshed[key]
 
     def prefetch(self, instance: TaskInstance) -> None:
         """Start the reference execution now, while the LLM is still busy with this task."""
@@ -116,8 +127,10 @@ class Evaluator:
             reference_task = asyncio.ensure_future(self.references.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
-        verdict = evaluate_rigid(
-            candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
+        # off the event loop: graph isomorphism and trajectory resampling take ~10 ms a task, during
+        # which no LLM answer would be read and no request sent
+        verdict = await asyncio.to_thread(
+            evaluate_rigid, candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
             selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
         )

@@ -39,6 +39,13 @@ class FlowContext:
 
 async def run_flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dict[str, Any]:
     """One task instance from the prompts to its record."""
+    try:
+        return await _flow(instance, kind, ctx)
+    finally:
+        ctx.evaluator.release(instance)
+
+
+async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dict[str, Any]:
     settings, evaluator = ctx.settings, ctx.evaluator
     t0 = time.perf_counter()
     evaluator.prefetch(instance)

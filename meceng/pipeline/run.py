@@ -98,7 +98,7 @@ async def run_benchmark(
                     log.error("task failed", task=instance.key, error=str(exc))
                     produced = [failed_record(instance, exc)]
             for record in produced:
-                writer.append(record)
+                await asyncio.to_thread(writer.append, record)  # JSON of a whole record and an fsync
                 records.append(slim_record(record))
             record = produced[-1]
             log.info("task done", task=instance.key, overall=record["overall"],

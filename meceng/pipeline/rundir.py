@@ -12,6 +12,7 @@ import logging
 import os
 import platform
 import re
+import threading
 from pathlib import Path
 from typing import Any
 
@@ -78,6 +79,7 @@ class RunWriter:
         self.journal_path = run_dir / "journal.jsonl"
         self.finished = read_jsonl(self.journal_path)  # also cuts a line half-written by a kill
         self._journal = open(self.journal_path, "a", encoding="utf-8")  # noqa: SIM115 - kept open for the run
+        self._lock = threading.Lock()
 
     def part_path(self, instance: TaskInstance) -> Path:
         """Where a passing part's reduced FEM model is kept (for its assembly)."""
@@ -101,9 +103,12 @@ class RunWriter:
         return files
 
     def append(self, record: dict[str, Any]) -> None:
-        self._journal.write(json.dumps(record, default=str) + "\n")
-        self._journal.flush()
-        os.fsync(self._journal.fileno())
+        """One line per finished task, on disk before this returns (safe from threads)."""
+        line = json.dumps(record, default=str) + "\n"
+        with self._lock:
+            self._journal.write(line)
+            self._journal.flush()
+            os.fsync(self._journal.fileno())
 
     def finish(self, settings_json: dict[str, Any], records: list[dict[str, Any]], started: float, wall: float,
                extra: dict[str, Any] | None = None) -> Path:

@@ -168,8 +168,9 @@ async def execute(
     directory under the given names (the saved parts an assembly loads).
     """
     limits = limits or ExecutionLimits()
-    if check:
-        verdict = check_program(program, PART_IMPORT_ROOTS if limits.mode == "part" else ALLOWED_IMPORT_ROOTS)
+    if check:  # parsing a program takes milliseconds: off the event loop, which serves the LLM requests
+        verdict = await asyncio.to_thread(
+            check_program, program, PART_IMPORT_ROOTS if limits.mode == "part" else ALLOWED_IMPORT_ROOTS)
         if not verdict:
             where = f" (line {verdict.line})" if verdict.line else ""
             return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
@@ -256,7 +257,8 @@ async def _run_warm(scratch: Path, program: str, sim_block: str, limits: Executi
     wall = time.perf_counter() - t0
     stdout = _read_bounded_file(scratch / "stdout.txt", limits.output_bytes)
     stderr = _read_bounded_file(scratch / "stderr.txt", limits.output_bytes)
-    return _collect(scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
+    # reading the result, trajectory and part files: off the event loop
+    return await asyncio.to_thread(_collect, scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
 
 
 def _collect(
