@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from fake_ollama import FakeOllama, chat_reply
+from records import normalized
 
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
@@ -56,17 +57,10 @@ def _settings(url: str, tmp_path: Path, name: str, slugs: tuple[str, ...], varia
 
 
 def _comparable(path: Path) -> dict[str, Any]:
-    def clean(value: Any) -> Any:
-        if isinstance(value, dict):
-            return {k: clean(v) for k, v in value.items() if not any(w in k for w in VOLATILE)}
-        if isinstance(value, list):
-            return [clean(v) for v in value]
-        return value
-
     run = json.loads(path.read_text())  # stage details carry float noise (a mean distance of 4e-19 m)
-    return {record_key(r): clean({"stages": [(s["name"], s["passed"]) for s in r["stages"]],
-                                  **{k: r.get(k) for k in ("overall", "first_failure", "error_categories",
-                                                           "selection", "generation", "files", "parts")}})
+    kept = ("overall", "first_failure", "error_categories", "selection", "generation", "files", "parts")
+    return {record_key(r): normalized({"stages": [(s["name"], s["passed"]) for s in r["stages"]],
+                                       **{k: r.get(k) for k in kept}}, VOLATILE)
             for r in run["tasks"]}
 
 

@@ -12,8 +12,9 @@ import time
 from pathlib import Path
 from typing import Any
 
+from records import normalized
+
 ONLY = "1,2,3,4,9,11,12,19,23,29,35,43"
-VOLATILE = ("time", "timing", "duration", "started", "stderr_tail", "endpoint")
 
 
 def start(out: Path, name: str, resume: bool = False) -> subprocess.Popen[str]:
@@ -25,14 +26,6 @@ def start(out: Path, name: str, resume: bool = False) -> subprocess.Popen[str]:
 
 def journal_lines(path: Path) -> int:
     return path.read_bytes().count(b"\n") if path.exists() else 0
-
-
-def normalized(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {k: normalized(v) for k, v in value.items() if not any(w in k for w in VOLATILE)}
-    if isinstance(value, list):
-        return [normalized(v) for v in value]
-    return value
 
 
 def comparable(run_json: Path) -> dict[str, Any]:
