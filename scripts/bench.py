@@ -32,8 +32,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_scale
 from fake_ollama import FakeOllama, chat_reply
 
+from meceng.agents.backend_ollama import OllamaBackend
 from meceng.agents.catalog import rigid_catalog
-from meceng.agents.llm import LLMSettings, OllamaBackend
+from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.steps import choose_components, generate_code
 from meceng.eval.chain import Tolerances

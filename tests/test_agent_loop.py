@@ -123,7 +123,7 @@ async def test_tools_report_the_agents_program_never_the_ground_truth(tool: str)
 async def test_agent_through_the_openai_compatible_backend(tmp_path: Path) -> None:
     from fake_ollama import openai_reply
 
-    from meceng.agents.llm import OpenAIBackend
+    from meceng.agents.backend_openai import OpenAIBackend
 
     instance = default_registry().get(SLUG).instance(0)
 

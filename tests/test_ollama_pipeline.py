@@ -13,7 +13,8 @@ from pathlib import Path
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.llm import ChatRequest, LLMSettings, OllamaBackend, user_messages
+from meceng.agents.backend_ollama import OllamaBackend
+from meceng.agents.llm import ChatRequest, LLMSettings, user_messages
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry

@@ -6,7 +6,9 @@ import asyncio
 
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.llm import ChatRequest, LLMSettings, OllamaBackend, PrioritySlots, user_messages
+from meceng.agents.backend_ollama import OllamaBackend
+from meceng.agents.llm import ChatRequest, LLMSettings, user_messages
+from meceng.agents.scheduler import PrioritySlots
 
 
 async def test_priority_slots_serve_code_before_selection() -> None:
@@ -69,7 +71,7 @@ async def test_openai_compatible_backend(tmp_path) -> None:
 
     from fake_ollama import openai_reply
 
-    from meceng.agents.llm import OpenAIBackend
+    from meceng.agents.backend_openai import OpenAIBackend
     from meceng.agents.prompts import gold_code, gold_selection
     from meceng.pipeline import RunSettings, run_benchmark
     from meceng.tasks.registry import default_registry

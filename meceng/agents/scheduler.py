@@ -1,0 +1,165 @@
+"""The per-endpoint scheduler every HTTP backend shares: slots, endpoint choice and retries.
+
+At most ``batch_size`` requests are in flight per endpoint (a server queues silently beyond its
+parallel slots, then answers 503); code requests go before selections; transient failures —
+connection errors, timeouts, 408/429/5xx — are retried with exponential backoff or after the
+server's Retry-After; other 4xx errors (unknown model, unsupported option) are permanent. An
+endpoint that keeps failing is taken out for a while.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import heapq
+import time
+from dataclasses import dataclass, replace
+from typing import Any
+
+from tenacity import AsyncRetrying, RetryCallState, retry_if_exception, stop_after_attempt, wait_exponential
+
+from meceng.agents.llm import ChatRequest, ChatResponse, LLMError, LLMSettings
+from meceng.logs import get_logger
+
+log = get_logger(__name__)
+
+TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504})
+
+
+class PrioritySlots:
+    """A semaphore that serves waiters by priority, then arrival.
+
+    Code-generation requests (priority 0) of tasks that already chose their components go before
+    selection requests (priority 1) of new tasks: tasks finish depth-first, so their evaluation
+    overlaps the remaining inference instead of waiting for every selection to be done.
+    """
+
+    def __init__(self, capacity: int) -> None:
+        self.free = capacity
+        self._waiters: list[tuple[int, int, asyncio.Future[None]]] = []
+        self._seq = 0
+
+    async def acquire(self, priority: int) -> None:
+        if self.free > 0 and not self._waiters:
+            self.free -= 1
+            return
+        future: asyncio.Future[None] = asyncio.get_running_loop().create_future()
+        self._seq += 1
+        heapq.heappush(self._waiters, (priority, self._seq, future))
+        try:
+            await future
+        except asyncio.CancelledError:
+            if future.done() and not future.cancelled():
+                self.release()  # the slot was handed over just as we were cancelled
+            else:
+                self._waiters = [w for w in self._waiters if w[2] is not future]
+                heapq.heapify(self._waiters)
+            raise
+
+    def release(self) -> None:
+        while self._waiters:
+            _, _, future = heapq.heappop(self._waiters)
+            if not future.done():
+                future.set_result(None)  # hand the slot over directly
+                return
+        self.free += 1
+
+
+PRIORITY = {"code": 0, "select": 1}
+
+
+@dataclass
+class Endpoint:
+    host: str
+    client: Any
+    slots: PrioritySlots
+    capacity: int
+    in_flight: int = 0
+    failures: int = 0
+    disabled_until: float = 0.0
+
+    @property
+    def free(self) -> int:
+        return self.capacity - self.in_flight
+
+
+def _is_transient(exc: BaseException) -> bool:
+    return isinstance(exc, LLMError) and exc.transient
+
+
+class EndpointBackend:
+    """A backend that sends each request to one of its hosts: subclasses say how (``_send``) and
+    how an answer reads (``_convert``); the slots, endpoint choice and retries are here."""
+
+    name = "endpoints"
+
+    def __init__(self, settings: LLMSettings, client_factory: Any = None) -> None:
+        self.settings = settings
+        self.endpoints = [
+            Endpoint(host=h.rstrip("/"), client=client_factory(h) if client_factory else None,
+                     slots=PrioritySlots(settings.batch_size), capacity=settings.batch_size)
+            for h in settings.hosts
+        ]
+        self._pick_lock = asyncio.Lock()
+
+    async def chat(self, request: ChatRequest) -> ChatResponse:
+        attempts = 0
+        backoff = wait_exponential(multiplier=self.settings.backoff_s, max=60)
+
+        def wait(state: RetryCallState) -> float:
+            exc = state.outcome.exception() if state.outcome else None
+            if isinstance(exc, LLMError) and exc.retry_after is not None:
+                return min(exc.retry_after, 120.0)  # the server said when; believe it, within reason
+            return backoff(state)
+
+        retrying = AsyncRetrying(
+            retry=retry_if_exception(_is_transient),
+            stop=stop_after_attempt(self.settings.max_attempts),
+            wait=wait,
+            reraise=True,
+        )
+        async for attempt in retrying:
+            with attempt:
+                attempts += 1
+                response = await self._chat_once(request)
+                return _with_attempts(response, attempts)
+        raise AssertionError("unreachable")  # pragma: no cover
+
+    def _choose(self) -> Endpoint:
+        now = time.monotonic()
+        usable = [e for e in self.endpoints if e.disabled_until <= now] or self.endpoints
+        return max(usable, key=lambda e: (e.free, -e.failures))
+
+    async def _chat_once(self, request: ChatRequest) -> ChatResponse:
+        async with self._pick_lock:
+            endpoint = self._choose()
+            endpoint.in_flight += 1
+        await endpoint.slots.acquire(PRIORITY.get(request.purpose, 1))
+        try:  # the slot is held for exactly one request
+            raw, wall = await self._send(endpoint, request)
+        finally:
+            endpoint.slots.release()
+            endpoint.in_flight -= 1
+        endpoint.failures = 0
+        return self._convert(raw, wall, endpoint.host)
+
+    def _convert(self, raw: Any, wall: float, host: str) -> ChatResponse:
+        raise NotImplementedError
+
+    async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
+        raise NotImplementedError
+
+    def _note_failure(self, endpoint: Endpoint, transient: bool) -> None:
+        if transient:
+            endpoint.failures += 1
+            if endpoint.failures >= 3:
+                endpoint.disabled_until = time.monotonic() + min(60.0, 5.0 * endpoint.failures)
+                log.warning("endpoint taken out", host=endpoint.host, failures=endpoint.failures)
+
+    async def aclose(self) -> None:
+        return None
+
+
+def _with_attempts(response: ChatResponse, attempts: int) -> ChatResponse:
+    if attempts == 1:
+        return response
+    return replace(response, attempts=attempts)
