@@ -1,8 +1,6 @@
 """``python -m meceng``: the same command line as ``meceng``."""
 
-import sys
-
-from meceng.cli import main
+from meceng.cli import console_main
 
 if __name__ == "__main__":
-    sys.exit(main())
+    console_main()

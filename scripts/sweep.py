@@ -20,7 +20,7 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from meceng.cli import _levels, _positive_int, _think, print_summary
+from meceng.cli import _levels, _positive_int, _think, exit_now, print_summary
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.sweep import ModelSpec, grid_points, load_spec, unreachable_hosts, with_overrides
@@ -124,4 +124,4 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    exit_now(main())  # without the interpreter's teardown: see meceng.cli.exit_now
