@@ -256,6 +256,19 @@ def cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_view(args: argparse.Namespace) -> int:
+    from meceng.viewer.site import build_site
+
+    try:
+        stats = build_site(args.runs, args.out, workers=args.workers, pages=not args.index_only)
+    except (FileNotFoundError, ValueError, KeyError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(f"viewer written in {stats.seconds:.1f} s: {stats.records} records, {stats.pages} pages, "
+          f"{stats.plots} plots; open {stats.index.resolve().as_uri()}")
+    return 0
+
+
 def cmd_rescore(args: argparse.Namespace) -> int:
     from meceng.pipeline import rescore
 
@@ -319,6 +332,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--models", type=Path, default=None,
                    help="sweep spec whose [[models]] give release (YYYY-MM-DD) and size_b, for Fig. 7")
     p.set_defaults(func=cmd_report)
+
+    p = sub.add_parser("view", help="a static site to browse every task record of runs, with plots")
+    p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
+    p.add_argument("--out", type=Path, default=Path("viewer"),
+                   help="site folder (report/viewer: `meceng report --out report` then links to it)")
+    p.add_argument("--workers", type=int, default=None, help="processes writing pages (default: up to 4)")
+    p.add_argument("--index-only", action="store_true", help="write the index table only, no per-task pages")
+    p.set_defaults(func=cmd_view)
 
     p = sub.add_parser("rescore", help="grade the saved programs of a run again, without any LLM call")
     p.add_argument("run_dir", type=Path)
