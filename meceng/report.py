@@ -98,13 +98,31 @@ def _difficulty_plot(path: Path, rows: list[dict[str, Any]]) -> None:
     plt.close(fig)
 
 
-def _table(headers: list[str], rows: list[list[str]]) -> tuple[str, str]:
-    """The same table as Markdown and as HTML."""
+def _table(headers: list[str], rows: list[list[str]], links: list[str] | None = None) -> tuple[str, str]:
+    """The same table as Markdown and as HTML; ``links``: a URL per row for its first cell (the
+    viewer's records of that row)."""
     md = ["| " + " | ".join(headers) + " |", "|" + "---|" * len(headers)]
     md += ["| " + " | ".join(r) + " |" for r in rows]
     head = "".join(f"<th>{html.escape(h)}</th>" for h in headers)
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows)
+
+    def cells(i: int, r: list[str]) -> str:
+        out = [f"<td>{html.escape(c)}</td>" for c in r]
+        if links and r:
+            out[0] = f"<td><a href='{html.escape(links[i], quote=True)}'>{html.escape(r[0])}</a></td>"
+        return "".join(out)
+
+    body = "".join(f"<tr>{cells(i, r)}</tr>" for i, r in enumerate(rows))
     return "\n".join(md), f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def _viewer_links(out: Path, key: str, values: list[str]) -> list[str] | None:
+    """Links into a viewer written beside the report (``meceng view ... --out <report>/viewer``):
+    the index filtered to ``key`` = each value; None when there is no viewer there."""
+    if not (out / "viewer" / "index.html").exists():
+        return None
+    from urllib.parse import quote
+
+    return [f"viewer/index.html#{key}={quote(v, safe='')}" for v in values]
 
 
 def _release_plot(path: Path, points: list[tuple[str, str, float | None, float]]) -> None:
@@ -143,7 +161,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     stages = stage_table(runs)
     headers = ["run", "n", *[label for _, label in RIGID_COLUMNS]]
     rows = [[r["run"], str(r["n"]), *[r[k].text() for k, _ in RIGID_COLUMNS]] for r in stages]
-    md, ht = _table(headers, rows)
+    md, ht = _table(headers, rows, _viewer_links(out, "model", [r["model"] for r in stages]))
     _bar_plot(out / "stages.png", {r["run"]: {label: r[k] for k, label in RIGID_COLUMNS} for r in stages},
               "Success rate per stage", "success (%)")
     sections.append(("Success per stage (Table 2)", md, ht, "stages.png"))
@@ -186,7 +204,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     _difficulty_plot(out / "difficulty.png", hard)
     md, ht = _table(["task model", "level", "n", "overall", "difficulty"],
                     [[r["slug"], str(r["level"]), str(r["n"]), r["overall"].text(), f"{100 * r['difficulty']:.1f}"]
-                     for r in hard])
+                     for r in hard], _viewer_links(out, "task", [r["slug"] for r in hard]))
     sections.append(("Difficulty per task model (Fig. 11)", md, ht, "difficulty.png"))
 
     facts = model_facts(models_file)
