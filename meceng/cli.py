@@ -265,7 +265,7 @@ def cmd_view(args: argparse.Namespace) -> int:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     print(f"viewer written in {stats.seconds:.1f} s: {stats.records} records, {stats.pages} pages, "
-          f"{stats.plots} plots; open {stats.index.resolve().as_uri()}")
+          f"{stats.plots} plots drawn; open {stats.index.resolve().as_uri()}")
     return 0
 
 

@@ -150,6 +150,15 @@ def test_site_over_a_finished_and_a_running_run(tmp_path: Path) -> None:
     passed = (tmp_path / "site" / "tasks" / "r0" / "single_pendulum-0.html").read_text()
     assert ".png" not in passed  # a passing record draws no plot
 
+    # built again: the plot is kept, not drawn again; a record gone from the run takes its page along
+    run_json = json.loads((done / "run.json").read_text())
+    run_json["tasks"] = run_json["tasks"][1:]
+    (done / "run.json").write_text(json.dumps(run_json))
+    again = build_site([tmp_path / "runs"], tmp_path / "site", workers=1)
+    assert (again.records, again.plots) == (3, 0)
+    assert "single_pendulum-1.traj.png" in (tmp_path / "site" / "tasks" / "r0" / "single_pendulum-1.html").read_text()
+    assert not (tmp_path / "site" / "tasks" / "r0" / "single_pendulum-0.html").exists()
+
 
 def test_data_script_cannot_end_its_script_element() -> None:
     text = data_script({"rows": [["</script><script>alert(1)</script>"]]})

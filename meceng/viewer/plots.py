@@ -41,6 +41,34 @@ def _differing(traces: dict[str, Any], count: int) -> list[int]:
     return shown or list(range(min(2, traces["ref_q"].shape[1])))
 
 
+#: (rows, cols) -> a figure with its axes and their two lines, made once per process and redrawn:
+#: a new figure per plot cost ~3x as much (0.65 s against 0.23 s on a loaded 2-core machine)
+_FIGURES: dict[tuple[int, int], tuple[Any, list[Any], list[tuple[Any, Any]]]] = {}
+
+
+def _figure(rows: int, cols: int) -> tuple[Any, list[Any], list[tuple[Any, Any]]]:
+    if (rows, cols) not in _FIGURES:
+        fig, grid = plt.subplots(rows, cols, figsize=(5.2 * cols, 2.2 * rows), squeeze=False)
+        axes = list(grid.flat)
+        lines = []
+        for n, ax in enumerate(axes):
+            truth, = ax.plot([], [], color="#1f5fbf", lw=1.6, label="ground truth")
+            program, = ax.plot([], [], color="#d62728", lw=1.3, ls="--", label="program")
+            lines.append((truth, program))
+            ax.xaxis.set_major_locator(MaxNLocator(5))
+            ax.yaxis.set_major_locator(MaxNLocator(4))
+            ax.tick_params(labelsize=7)
+            if n == 0:
+                ax.legend(fontsize=7, loc="best")
+            if n // cols == rows - 1:
+                ax.set_xlabel("time (s)", fontsize=8)
+        # fixed margins: tight_layout measures every tick label and took most of a plot's time
+        fig.subplots_adjust(left=0.09 if cols == 2 else 0.13, right=0.98, bottom=0.5 / (2.2 * rows) + 0.04,
+                            top=1 - 0.3 / (2.2 * rows), wspace=0.25, hspace=0.45)
+        _FIGURES[(rows, cols)] = (fig, axes, lines)
+    return _FIGURES[(rows, cols)]
+
+
 def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COORDINATES) -> bool:
     """Program (dashed) vs ground truth (solid) over time, one panel per coordinate, the ones
     that differ most first. False when the traces hold no trajectory."""
@@ -48,30 +76,20 @@ def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COO
         return False
     picked = _differing(traces, count)
     cols = 2 if len(picked) > 1 else 1
-    rows = (len(picked) + cols - 1) // cols
-    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 2.2 * rows), squeeze=False)
-    for n in range(rows * cols):
-        ax = axes[n // cols][n % cols]
+    fig, axes, lines = _figure((len(picked) + cols - 1) // cols, cols)
+    for n, (ax, (truth, program)) in enumerate(zip(axes, lines, strict=True)):
+        ax.set_visible(n < len(picked))
         if n >= len(picked):
-            ax.set_visible(False)
             continue
         k = picked[n]
-        ax.plot(traces["ref_t"], traces["ref_q"][:, k], color="#1f5fbf", lw=1.6, label="ground truth")
-        if "cand_q" in traces and k < traces["cand_q"].shape[1]:
-            ax.plot(traces["cand_t"], traces["cand_q"][:, k], color="#d62728", lw=1.3, ls="--", label="program")
+        truth.set_data(traces["ref_t"], traces["ref_q"][:, k])
+        has_program = "cand_q" in traces and k < traces["cand_q"].shape[1]
+        program.set_visible(has_program)
+        program.set_data((traces["cand_t"], traces["cand_q"][:, k]) if has_program else ([], []))
+        ax.relim(visible_only=True)
+        ax.autoscale_view()
         ax.set_title(f"coordinate q[{int(traces['coordinates'][k])}]", fontsize=9, pad=3)
-        ax.xaxis.set_major_locator(MaxNLocator(5))
-        ax.yaxis.set_major_locator(MaxNLocator(4))
-        ax.tick_params(labelsize=7)
-        if n == 0:
-            ax.legend(fontsize=7)
-        if n // cols == rows - 1:
-            ax.set_xlabel("time (s)", fontsize=8)
-    # fixed margins: tight_layout measures every tick label and took most of a plot's time
-    fig.subplots_adjust(left=0.09 if cols == 2 else 0.13, right=0.98, bottom=0.5 / (2.2 * rows) + 0.04,
-                        top=1 - 0.3 / (2.2 * rows), wspace=0.25, hspace=0.45)
     fig.savefig(path, dpi=80)
-    plt.close(fig)
     return True
 
 
