@@ -10,6 +10,7 @@ earlier build drew from the same traces file is kept (matplotlib costs 0.1-0.3 s
 
 from __future__ import annotations
 
+import functools
 import multiprocessing
 import os
 import shutil
@@ -99,7 +100,7 @@ def write_page(run_index: int, position: int, out: Path) -> int:
                 images[kind] = png.name
                 plots += 1
     program, reference = _programs(run, record)
-    links = {name: os.path.relpath(run.path.resolve() / rel, folder.resolve())
+    links = {name: os.path.relpath(_resolved(run.path) / rel, _resolved(folder))
              for name, rel in (record.get("files") or {}).items()}
     neighbours = tuple(Path(page_path(run_index, run.tasks[p])).name if 0 <= p < len(run.tasks) else None
                        for p in (position - 1, position + 1))
@@ -107,6 +108,11 @@ def write_page(run_index: int, position: int, out: Path) -> int:
                      file_links=links, images=images, neighbours=neighbours)  # type: ignore[arg-type]
     target.write_text(html, encoding="utf-8")
     return plots
+
+
+@functools.lru_cache(maxsize=64)
+def _resolved(path: Path) -> Path:
+    return path.resolve()
 
 
 def _write_share(args: tuple[list[tuple[int, int]], str]) -> int:
