@@ -20,7 +20,7 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from meceng.cli import _levels, _positive_int, _think, exit_now, print_summary
+from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.sweep import ModelSpec, grid_points, load_spec, unreachable_hosts, with_overrides
@@ -37,15 +37,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--host", "--base-url", action="append", dest="host",
                    help="server URL (Ollama, or an OpenAI-compatible .../v1); repeat for several")
     p.add_argument("--temperature", action="append", type=float)
-    p.add_argument("--think", action="append", type=_think)
+    p.add_argument("--think", action="append", type=parse_think)
     p.add_argument("--select-template", action="append")
     p.add_argument("--code-template", action="append")
-    p.add_argument("--levels", type=_levels)
+    p.add_argument("--levels", type=parse_levels)
     p.add_argument("--only", action="append", default=None, help="task slugs or ids, comma-separated; repeatable")
-    p.add_argument("--variations", type=_positive_int)
+    p.add_argument("--variations", type=positive_int)
     p.add_argument("--seed", type=int)
-    p.add_argument("--batch-size", type=_positive_int)
-    p.add_argument("--workers", type=_positive_int)
+    p.add_argument("--batch-size", type=positive_int)
+    p.add_argument("--workers", type=positive_int)
     p.add_argument("--timeout", type=float, help="seconds per program execution")
     p.add_argument("--executor", choices=("fork", "subprocess"), default="fork")
     p.add_argument("--out", type=Path)

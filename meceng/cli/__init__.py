@@ -1,0 +1,135 @@
+"""Command line: ``meceng tasks|evaluate|run|report|view|rescore``.
+
+Exit codes: 0 success, 1 the graded program failed (``evaluate``), 2 wrong usage or unknown task.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+from meceng.cli.arguments import LEVELS, add_run_arguments, parse_levels, parse_think, positive_int
+from meceng.cli.commands import (
+    cmd_evaluate,
+    cmd_report,
+    cmd_rescore,
+    cmd_run,
+    cmd_tasks_list,
+    cmd_tasks_reference,
+    cmd_tasks_show,
+    cmd_view,
+    print_summary,
+)
+
+__all__ = ["build_parser", "console_main", "exit_now", "main", "parse_levels", "parse_think", "positive_int",
+           "print_summary"]
+
+
+class _VersionAction(argparse.Action):
+    """MecEng's version and those of the simulation stack it grades with (looked up only when asked)."""
+
+    def __init__(self, option_strings: list[str], dest: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest, nargs=0, **kwargs)
+
+    def __call__(self, parser: argparse.ArgumentParser, *args: Any, **kwargs: Any) -> None:
+        from meceng import __version__
+        from meceng.pipeline import versions
+
+        found = versions()
+        stack = ", ".join(f"{name} {found[name]}" for name in ("exudyn", "ngsolve", "scipy", "pymeshlab", "python"))
+        print(f"meceng {__version__} ({stack})")
+        parser.exit()
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="meceng", description="MecEng: LLMs building multibody models")
+    parser.add_argument("--version", action=_VersionAction, help="show the versions and exit")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    tasks = sub.add_parser("tasks", help="list, show and print task models")
+    tsub = tasks.add_subparsers(dest="tasks_command", required=True)
+    p = tsub.add_parser("list", help="list task models")
+    p.add_argument("--level", choices=LEVELS)
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=cmd_tasks_list)
+    for name, func, helptext in (("show", cmd_tasks_show, "show one task instance"),
+                                 ("reference", cmd_tasks_reference, "print the ground-truth program")):
+        p = tsub.add_parser(name, help=helptext)
+        p.add_argument("slug", help="task slug or paper id")
+        p.add_argument("--seed", type=int, default=0)
+        if name == "show":
+            p.add_argument("--json", action="store_true")
+        p.set_defaults(func=func)
+
+    p = sub.add_parser("evaluate", help="grade a program against a task instance")
+    p.add_argument("slug")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--code", type=Path, required=True, help="the Python program to grade")
+    p.add_argument("--components", default=None, help="comma-separated chosen components (optional)")
+    p.add_argument("--timeout", type=float, default=60.0)
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=cmd_evaluate)
+
+    p = sub.add_parser("report", help="HTML, Markdown and PNG report from runs")
+    p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
+    p.add_argument("--out", type=Path, default=Path("report"))
+    p.add_argument("--models", type=Path, default=None,
+                   help="sweep spec whose [[models]] give release (YYYY-MM-DD) and size_b, for Fig. 7")
+    p.set_defaults(func=cmd_report)
+
+    p = sub.add_parser("view", help="a static site to browse every task record of runs, with plots")
+    p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")
+    p.add_argument("--out", type=Path, default=Path("viewer"),
+                   help="site folder (report/viewer: `meceng report --out report` then links to it)")
+    p.add_argument("--workers", type=int, default=None, help="processes writing pages (default: up to 4)")
+    p.add_argument("--index-only", action="store_true", help="write the index table only, no per-task pages")
+    p.set_defaults(func=cmd_view)
+
+    p = sub.add_parser("rescore", help="grade the saved programs of a run again, without any LLM call")
+    p.add_argument("run_dir", type=Path)
+    p.set_defaults(func=cmd_rescore)
+
+    p = sub.add_parser("run", help="run the benchmark for one model")
+    add_run_arguments(p)
+    p.set_defaults(func=cmd_run)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # output piped into `head` and the like: stop quietly
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+
+
+def exit_now(code: int) -> None:
+    """Leave with ``code`` once everything is flushed, skipping the interpreter's teardown.
+
+    A full gold sweep over every level (thousands of Netgen meshes and PyMeshLab distances in
+    this process) once ended in glibc's "malloc_consolidate(): unaligned fastbin chunk detected"
+    abort while Python tore the extension modules down — after run.json and the summary were
+    written, so a finished run exited 134. The cause is not found yet; nothing is left to do at
+    that point, so the command-line entry points exit without the teardown.
+    """
+    import logging
+    import os
+
+    sys.stdout.flush()
+    sys.stderr.flush()
+    logging.shutdown()
+    os._exit(code)
+
+
+def console_main() -> None:
+    """The ``meceng`` command (``main`` stays callable in-process, e.g. by tests)."""
+    exit_now(main())
+

@@ -1,0 +1,133 @@
+"""Argument types and groups shared by ``meceng run`` and ``scripts/sweep.py``, and the run settings
+they make."""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
+
+if TYPE_CHECKING:
+    from meceng.pipeline import RunSettings
+
+LEVELS = ("1", "2", "3a", "3b")
+
+
+def parse_levels(text: str) -> tuple[str, ...]:
+    levels = tuple(x.strip() for x in text.split(",") if x.strip())
+    bad = [lv for lv in levels if lv not in LEVELS]
+    if bad or not levels:
+        raise argparse.ArgumentTypeError(f"levels must be a comma-separated subset of {', '.join(LEVELS)}")
+    return levels
+
+
+def positive_int(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError("must be >= 1")
+    return value
+
+
+def parse_think(text: str) -> bool | str:
+    lowered = text.lower()
+    if lowered in ("true", "on", "yes", "1"):
+        return True
+    if lowered in ("false", "off", "no", "0"):
+        return False
+    if lowered in ("low", "medium", "high"):
+        return lowered
+    raise argparse.ArgumentTypeError("think must be on/off or low/medium/high")
+
+
+def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--model", default="gold", help="model name (Ollama name, or 'gold')")
+    parser.add_argument("--backend", choices=("ollama", "openai", "gold"), default=None,
+                        help="LLM backend; default: gold for --model gold, else ollama")
+    parser.add_argument("--host", "--base-url", action="append", default=None, dest="host",
+                        help="server URL (Ollama: http://127.0.0.1:11434; openai: http://HOST:PORT/v1); "
+                             "repeat for several servers")
+    parser.add_argument("--temperature", type=float, default=0.0)
+    parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
+    parser.add_argument("--think", type=parse_think, default=False, help="on/off or low/medium/high")
+    parser.add_argument("--num-ctx", type=positive_int, default=4096)
+    parser.add_argument("--num-predict", type=positive_int, default=2048)
+    parser.add_argument("--batch-size", type=positive_int, default=4,
+                        help="parallel requests per server (its OLLAMA_NUM_PARALLEL)")
+    parser.add_argument("--llm-timeout", type=float, default=600.0, help="seconds per LLM request")
+
+
+def add_run_arguments(parser: argparse.ArgumentParser) -> None:
+    add_llm_arguments(parser)
+    parser.add_argument("--levels", type=parse_levels, default=("1", "2"), help="e.g. 1,2")
+    parser.add_argument("--only", action="append", default=[],
+                        help="task slugs or ids, comma-separated; repeatable")
+    parser.add_argument("--variations", type=positive_int, default=3, help="parameter variations per model")
+    parser.add_argument("--seed", type=int, default=0, help="first instance seed")
+    parser.add_argument("--out", type=Path, default=Path("runs"), help="directory for run folders")
+    parser.add_argument("--name", default=None, help="run folder name (default: time stamp + model)")
+    parser.add_argument("--workers", type=positive_int, default=None, help="parallel program executions")
+    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
+    parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
+                        help="fork: warm fork server (default); subprocess: a cold interpreter per program")
+    parser.add_argument("--agent", choices=("pipeline", "loop"), default="pipeline",
+                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs")
+    parser.add_argument("--max-rounds", type=positive_int, default=6, help="model calls per task in --agent loop")
+    parser.add_argument("--token-budget", type=positive_int, default=30000,
+                        help="completion tokens per task in --agent loop")
+    parser.add_argument("--select-template", default=DEFAULT_SELECT)
+    parser.add_argument("--code-template", default=DEFAULT_CODE)
+    parser.add_argument("--no-progress", action="store_true")
+    parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
+                        help="continue a killed run in RUN_DIR with its saved settings")
+
+
+def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
+                 think: bool | str | None = None) -> LLMSettings:
+    model = model or args.model
+    backend = args.backend or ("gold" if model == "gold" else "ollama")
+    if model == "gold":
+        backend = "gold"
+    return LLMSettings(
+        model=model, backend=backend, hosts=tuple(args.host or ("http://127.0.0.1:11434",)),
+        temperature=args.temperature if temperature is None else temperature, seed=args.llm_seed,
+        think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
+        batch_size=args.batch_size, timeout_s=args.llm_timeout,
+    )
+
+
+def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = None) -> RunSettings:
+    from meceng.pipeline import RunSettings
+
+    if args.select_template not in SELECT_TEMPLATES:
+        raise SystemExit(f"error: unknown --select-template {args.select_template!r}; "
+                         f"choose from {', '.join(SELECT_TEMPLATES)}")
+    if args.code_template not in CODE_TEMPLATES:
+        raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
+                         f"choose from {', '.join(CODE_TEMPLATES)}")
+    return RunSettings(
+        llm=llm, levels=args.levels, only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()),
+        variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
+        workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
+        select_template=args.select_template, code_template=args.code_template,
+        progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
+        token_budget=args.token_budget,
+    )
+
+
+def resumed_settings(args: argparse.Namespace) -> RunSettings:
+    from meceng.pipeline import RunSettings
+
+    run_dir: Path = args.resume
+    try:
+        data = json.loads((run_dir / "settings.json").read_text())
+    except (OSError, ValueError) as exc:
+        raise SystemExit(f"error: {run_dir} is not a run folder with a readable settings.json ({exc})") from None
+
+    settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
+    return dataclasses.replace(settings, progress=not args.no_progress)

@@ -1,0 +1,158 @@
+"""The subcommands of ``meceng``: each reads its parsed arguments, calls the library and prints what a
+person running it wants to see. Exit codes: 0 success, 1 the graded program failed (``evaluate``),
+2 wrong usage or unknown task."""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
+from meceng.tasks.registry import default_registry
+
+
+def cmd_tasks_list(args: argparse.Namespace) -> int:
+    registry = default_registry()
+    models = registry.select([args.level] if args.level else None)
+    if args.json:
+        print(json.dumps([{"id": m.id, "slug": m.slug, "name": m.name, "level": m.level,
+                           "components": list(m.components)} for m in models], indent=1))
+        return 0
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table("id", "level", "slug", "name")
+    for m in models:
+        table.add_row(str(m.id), m.level, m.slug, m.name)
+    Console().print(table)
+    return 0
+
+
+def _instance(args: argparse.Namespace) -> Any:
+    registry = default_registry()
+    try:
+        model = registry.get(args.slug)
+    except KeyError as exc:
+        print(f"error: {exc.args[0]}", file=sys.stderr)
+        raise SystemExit(2) from None
+    return model.instance(args.seed)
+
+
+def cmd_tasks_show(args: argparse.Namespace) -> int:
+    instance = _instance(args)
+    data = instance.to_json()
+    if args.json:
+        print(json.dumps(data, indent=1))
+        return 0
+    print(f"{instance.task_id} {instance.name} (level {instance.level}, seed {instance.seed})\n")
+    print(instance.description + "\n")
+    print("parameters: " + ", ".join(f"{k} = {v}" for k, v in instance.params.items()))
+    print("required components: " + ", ".join(instance.required_components))
+    return 0
+
+
+def cmd_tasks_reference(args: argparse.Namespace) -> int:
+    print(_instance(args).reference_program, end="")
+    return 0
+
+
+def cmd_evaluate(args: argparse.Namespace) -> int:
+    from meceng.pipeline import evaluate_program
+    from meceng.tools.executor import ExecutionLimits
+
+    instance = _instance(args)
+    try:
+        code = args.code.read_text()
+    except OSError as exc:
+        print(f"error: cannot read {args.code}: {exc.strerror}", file=sys.stderr)
+        return 2
+    selected = tuple(x.strip() for x in args.components.split(",") if x.strip()) if args.components else None
+    verdict, candidate, _ = asyncio.run(
+        evaluate_program(instance, code, selected, limits=ExecutionLimits(timeout_s=args.timeout)))
+    data = {"task": instance.slug, "seed": instance.seed, **verdict.to_json(), "execution": candidate.summary()}
+    if args.json:
+        print(json.dumps(data, indent=1, default=str))
+    else:
+        for stage in verdict.stages:
+            mark = {True: "pass", False: "FAIL", None: " -- "}[stage.passed]
+            print(f"[{mark}] {stage.name:<22} {stage.detail}")
+        print(f"overall: {'success' if verdict.overall else 'failure'}"
+              + (f" (first failure: {verdict.first_failure})" if verdict.first_failure else ""))
+        if verdict.error_categories:
+            print("error categories: " + ", ".join(verdict.error_categories))
+        if verdict.infrastructure_error:
+            print(f"infrastructure error: {verdict.infrastructure_error}")
+    return 0 if verdict.overall else 1
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from meceng.logs import configure_logging
+    from meceng.pipeline import run_benchmark
+
+    settings = resumed_settings(args) if args.resume else run_settings(args, llm_settings(args))
+    configure_logging(None, console=True)
+    try:
+        path = asyncio.run(run_benchmark(settings))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    configure_logging(None)
+    print_summary(path)
+    return 0
+
+
+def print_summary(run_json: Path) -> None:
+    run = json.loads(run_json.read_text())
+    summary = run["summary"]
+    print(f"{run_json}\n{summary['counted']} tasks graded, {summary['infrastructure_failures']} infrastructure "
+          "failures")
+    # one line per level: parts and assemblies have different stages, a mixed rate would mislead
+    for level, block in summary["levels"].items():
+        line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
+        print(f"level {level} ({block['counted']}): {line}")
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    import time
+
+    from meceng.report import build_report
+
+    t0 = time.perf_counter()
+    try:
+        files = build_report(args.runs, args.out, args.models)
+    except (FileNotFoundError, ValueError, KeyError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(f"report written in {time.perf_counter() - t0:.1f} s: {files['html']} {files['markdown']}")
+    return 0
+
+
+def cmd_view(args: argparse.Namespace) -> int:
+    from meceng.viewer.site import build_site
+
+    try:
+        stats = build_site(args.runs, args.out, workers=args.workers, pages=not args.index_only)
+    except (FileNotFoundError, ValueError, KeyError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(f"viewer written in {stats.seconds:.1f} s: {stats.records} records, {stats.pages} pages, "
+          f"{stats.plots} plots drawn; open {stats.index.resolve().as_uri()}")
+    return 0
+
+
+def cmd_rescore(args: argparse.Namespace) -> int:
+    from meceng.pipeline import rescore
+
+    run_dir: Path = args.run_dir if args.run_dir.is_dir() else args.run_dir.parent
+    if not (run_dir / "run.json").exists():
+        print(f"error: {run_dir} holds no run.json", file=sys.stderr)
+        return 2
+    path = asyncio.run(rescore(run_dir))
+    print_summary(path)
+    return 0
+
+
