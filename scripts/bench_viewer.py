@@ -21,9 +21,9 @@ from pathlib import Path
 from typing import Any
 
 from meceng.pipeline.rundir import record_key
+from meceng.pipeline.traces import traces_path
 from meceng.viewer.browser import load, screenshot
 from meceng.viewer.site import build_site
-from meceng.viewer.traces import traces_path
 
 CATEGORIES = ("initial conditions", "geometry", "inertia and mass", "stiffness and damping", "loads")
 

@@ -12,6 +12,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from records import normalized
 
 ONLY = "1,2,3,4,9,11,12,19,23,29,35,43"
@@ -58,6 +59,9 @@ def test_killed_runs_resume_to_the_same_result(tmp_path: Path) -> None:
     assert journal_lines(journal) == total
     assert journal_lines(tmp_path / "killed" / "responses.jsonl") == 2 * total
     assert run["resumed_tasks"] == done_before
+    # the viewer's traces of the tasks done before each kill are still there, one file per record
+    traces = sorted(p.name for p in (tmp_path / "killed" / "traces").iterdir())
+    assert traces == sorted(Path(t["files"]["traces"]).name for t in run["tasks"]) and len(traces) == total
 
 
 def test_existing_run_folder_is_not_overwritten(tmp_path: Path) -> None:
@@ -75,6 +79,9 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
     assert proc.returncode == 0, proc.stderr
     run_json = tmp_path / "r" / "run.json"
     run = json.loads(run_json.read_text())
+    traces = tmp_path / "r" / run["tasks"][0]["files"]["traces"]
+    with np.load(traces) as data:
+        assert "cand_t" in data.files and "ref_t" in data.files
     # tamper with a saved program's record: the rescore must grade the code it finds
     record = run["tasks"][0]
     record["generation"]["code"] = record["generation"]["code"].replace("mbs.Assemble()", "raise ValueError('x')")
@@ -88,3 +95,6 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
     assert all(t["evaluator"] for t in after["tasks"]) and "rescored" in after
     assert (tmp_path / "r" / "responses.jsonl").read_text().count("\n") == 4  # no new LLM call
     assert (tmp_path / "r" / "run.previous.json").exists()
+    # the plots follow the new grading: the tampered program left no trajectory, the ground truth did
+    with np.load(tmp_path / "r" / after["tasks"][0]["files"]["traces"]) as data:
+        assert "cand_t" not in data.files and "ref_t" in data.files

@@ -9,11 +9,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from meceng.pipeline.traces import MAX_POINTS, decimate_surface, load_traces, save_traces, traces_path
 from meceng.tools.executor import Execution
 from meceng.viewer.data import data_script, find_runs, index_data, load_run
 from meceng.viewer.diff import side_by_side
 from meceng.viewer.site import build_site
-from meceng.viewer.traces import MAX_POINTS, decimate_surface, load_traces, save_traces, traces_path
 
 
 def _trajectory(steps: int, coords: int, shift: dict[int, float] | None = None) -> tuple[np.ndarray, np.ndarray]:

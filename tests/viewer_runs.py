@@ -1,14 +1,11 @@
 """Real runs for the viewer's tests: a fake Ollama server answers with ground truths for some tasks
 and with broken programs for others, at every level, and an agent run repairs one program and
-fails another. Trajectories and part surfaces are kept as the flow will keep them (save_traces
-after grading), so the pages have their plots.
+fails another. The flow keeps trajectories and part surfaces (traces/), so the pages have their plots.
 """
 
 from __future__ import annotations
 
-import contextlib
 import re
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -17,9 +14,7 @@ from fake_ollama import FakeOllama, chat_reply
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.pipeline import RunSettings, run_benchmark
-from meceng.pipeline import flow as flow_module
 from meceng.tasks.registry import default_registry
-from meceng.viewer.traces import save_traces
 
 #: (slug, seed) -> what the fake model answers; everything else gets the ground truth
 SCENARIOS = {
@@ -34,26 +29,6 @@ RIGID = ("single_mass_oscillator", "double_mass_oscillator", "free_fall_mass_poi
          "single_pendulum", "slider_crank_rigid_bodies")
 ASSEMBLY = "cantilever_beam"
 AGENT_TASKS = ("single_mass_oscillator", "double_mass_oscillator")
-
-
-@contextlib.contextmanager
-def keeping_traces(run_dir: Path) -> Iterator[None]:
-    """What the flow does once it is wired: save_traces for every graded program."""
-    original = flow_module.task_record
-
-    def task_record(instance: Any, selection: Any, generation: Any, verdict: Any, candidate: Any, reference: Any,
-                    timing: Any, files: Any) -> dict[str, Any]:
-        record = original(instance, selection, generation, verdict, candidate, reference, timing, files)
-        path = save_traces(run_dir, instance.key, candidate, reference)
-        if path:
-            record["files"]["traces"] = path
-        return record
-
-    flow_module.task_record = task_record  # type: ignore[assignment]
-    try:
-        yield
-    finally:
-        flow_module.task_record = original  # type: ignore[assignment]
 
 
 def _instances(slugs: tuple[str, ...], seeds: int) -> dict[str, Any]:
@@ -108,8 +83,7 @@ async def pipeline_run(out: Path, name: str = "fake") -> Path:
         llm = LLMSettings(model="fake-model:7b", backend="ollama", hosts=(server.url,), batch_size=2, think=False)
         settings = RunSettings(llm=llm, levels=("1", "2", "3a", "3b"), only=(*RIGID, ASSEMBLY), variations=2, seed=0,
                                out=out, run_name=name, workers=2, exec_timeout_s=20.0, progress=False)
-        with keeping_traces(out / name):
-            await run_benchmark(settings)
+        await run_benchmark(settings)
     return out / name
 
 
@@ -142,6 +116,5 @@ async def agent_run(out: Path, name: str = "agent") -> Path:
         llm = LLMSettings(model="agent-model:1b", backend="ollama", hosts=(server.url,), batch_size=2)
         settings = RunSettings(llm=llm, only=AGENT_TASKS, variations=1, out=out, run_name=name, progress=False,
                                agent="loop", max_rounds=4, workers=2)
-        with keeping_traces(out / name):
-            await run_benchmark(settings)
+        await run_benchmark(settings)
     return out / name

@@ -114,11 +114,12 @@ def main(argv: list[str] | None = None) -> int:
 def exit_now(code: int) -> None:
     """Leave with ``code`` once everything is flushed, skipping the interpreter's teardown.
 
-    A full gold sweep over every level (thousands of Netgen meshes and PyMeshLab distances in
-    this process) once ended in glibc's "malloc_consolidate(): unaligned fastbin chunk detected"
-    abort while Python tore the extension modules down — after run.json and the summary were
-    written, so a finished run exited 134. The cause is not found yet; nothing is left to do at
-    that point, so the command-line entry points exit without the teardown.
+    Nothing is left to do at that point, and the teardown of the extension modules (Exudyn,
+    Netgen, PyMeshLab, matplotlib) is where a finished run once ended with glibc's
+    "malloc_consolidate(): unaligned fastbin chunk detected" abort (exit 134) after run.json was
+    written. That cause is found and fixed (see ``meceng.eval.parts.load_mesh_library``); the
+    command-line entry points still skip the teardown so that a finished run's exit status says
+    only how the run went.
     """
     import logging
     import os

@@ -20,7 +20,7 @@ import numpy as np
 
 from meceng.agents.catalog import Catalog, assembly_catalog, part_catalog, rigid_catalog
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
-from meceng.eval.parts import evaluate_part, minimum_maxh, part_data
+from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
 from meceng.tools.executor import Execution, ExecutionLimits, execute
 from meceng.tools.meshcheck import check_mesh_size
@@ -173,6 +173,7 @@ class Evaluator:
                 if remeshed.part is not None:
                     frequencies = np.asarray(remeshed.part["eigenfrequencies"], dtype=float)
                     facts["reference_frequencies_at_maxh"] = size
+        load_mesh_library()  # on the loop's thread, before the metrics' worker thread uses it
         t0 = time.perf_counter()
         stages = await asyncio.to_thread(
             evaluate_part, produced, truth, selected=selected, required=instance.required_components,

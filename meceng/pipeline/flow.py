@@ -25,6 +25,7 @@ from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .records import agent_block, agent_generation, lost_record, not_started_record, task_record
 from .rundir import RunWriter
 from .settings import RunSettings
+from .traces import save_traces
 
 
 @dataclass(frozen=True)
@@ -74,6 +75,10 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
     record = task_record(instance, selection, generation, graded.verdict, graded.candidate, graded.reference,
                          _times(t0, t_llm, time.perf_counter()), files)
     kind.extend(record, instance, graded, ctx.writer.run_dir)
+    # the viewer's plots: the executions are dropped once the record exists
+    traces = await asyncio.to_thread(save_traces, ctx.writer.run_dir, instance.key, graded.candidate, graded.reference)
+    if traces is not None:
+        record["files"]["traces"] = traces
     if agent is not None:
         record["agent"] = agent_block(agent, first)
     return record

@@ -21,6 +21,7 @@ from meceng.tools.executor import Execution, ExecutionLimits
 from .evaluation import Evaluator
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .rundir import record_key, write_atomic
+from .traces import save_traces
 
 
 async def evaluate_program(
@@ -82,8 +83,14 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
         selected = tuple(record["selection"].get("names", ()))
         graded = await kind_of(instance, record).grade(instance, generation.get("code"), selected,
                                                        generation.get("error"), keep=False)
+        files = dict(record.get("files") or {})
+        files.pop("traces", None)
+        traces = await asyncio.to_thread(save_traces, run_dir, record_key(record), graded.candidate,
+                                         graded.reference)
+        if traces is not None:  # the plots follow the new grading
+            files["traces"] = traces
         return {**record, **graded.verdict.to_json(), "execution": graded.candidate.summary(),
-                "reference_execution": graded.reference.summary(), "evaluator": EVALUATOR_VERSION}
+                "reference_execution": graded.reference.summary(), "evaluator": EVALUATOR_VERSION, "files": files}
 
     run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))
     run["summary"] = summarize(run["tasks"])

@@ -17,7 +17,7 @@ from meceng.agents.cache import read_jsonl
 from meceng.eval.chain import RIGID_STAGES
 from meceng.eval.parts import PART_STAGES
 from meceng.pipeline.rundir import record_key
-from meceng.viewer.traces import safe_key
+from meceng.pipeline.traces import safe_key
 
 #: every stage name in display order (parts, assembly gates, the rigid chain); a record fills its own
 STAGE_ORDER = (*PART_STAGES, "parts_overall", "mbs_started", *RIGID_STAGES)

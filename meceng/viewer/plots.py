@@ -20,7 +20,7 @@ from matplotlib.ticker import MaxNLocator
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from meceng.eval.solution import resample
-from meceng.viewer.traces import ranked_coordinates
+from meceng.pipeline.traces import ranked_coordinates
 
 PLOTTED_COORDINATES = 6
 VIEWS = ((25.0, -60.0, "oblique"), (90.0, -90.0, "top (z)"), (0.0, -90.0, "front (y)"))

@@ -21,9 +21,9 @@ from pathlib import Path
 from typing import Any
 
 from meceng.logs import get_logger
+from meceng.pipeline.traces import load_traces, traces_path
 from meceng.viewer.data import ViewRun, data_script, find_runs, index_data, load_run, page_path, run_labels
 from meceng.viewer.pages import task_page
-from meceng.viewer.traces import load_traces, traces_path
 
 log = get_logger(__name__)
 

@@ -22,6 +22,8 @@ import numpy as np
 from meceng.eval.solution import resample
 from meceng.logs import get_logger
 
+from .rundir import safe_name
+
 if TYPE_CHECKING:
     from meceng.tools.executor import Execution
 
@@ -33,10 +35,7 @@ MAX_TRIANGLES = 2000
 
 
 def safe_key(key: str) -> str:
-    """A record key (``slug@seed`` or ``origin/slug@seed``) as a file name, as parts/ names them.
-    (Imported here: the flow imports this module, and the pipeline package imports the flow.)"""
-    from meceng.pipeline.rundir import safe_name
-
+    """A record key (``slug@seed`` or ``origin/slug@seed``) as a file name, as parts/ names them."""
     return safe_name(key.replace("/", "--"))
 
 
