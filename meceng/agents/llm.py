@@ -50,6 +50,9 @@ class LLMSettings:
     timeout_s: float = 600.0
     max_attempts: int = 4
     backoff_s: float = 1.0
+    # hosted APIs "with default API settings" (paper, Tables 2 and 6): neither temperature nor seed is
+    # sent (OpenAI's reasoning models refuse temperature 0 with a 400)
+    api_defaults: bool = False
 
     def options(self) -> dict[str, Any]:
         opts: dict[str, Any] = {
@@ -67,6 +70,7 @@ class LLMSettings:
             "temperature": self.temperature, "seed": self.seed, "think": self.think,
             "num_ctx": self.num_ctx, "num_predict": self.num_predict, "keep_alive": self.keep_alive,
             "batch_size": self.batch_size, "timeout_s": self.timeout_s, "max_attempts": self.max_attempts,
+            "api_defaults": self.api_defaults,
         }
 
 
