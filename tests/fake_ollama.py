@@ -42,6 +42,7 @@ def chat_reply(content: str, model: str = "fake", done_reason: str = "stop", thi
 class FakeOllama:
     responder: Responder
     requests: list[dict[str, Any]] = field(default_factory=list)
+    headers: list[dict[str, str]] = field(default_factory=list)  # of every request, as received
     max_in_flight: int = 0
     _in_flight: int = 0
     _runner: web.AppRunner | None = None
@@ -54,6 +55,10 @@ class FakeOllama:
         except ValueError:
             return web.json_response({"error": "invalid JSON"}, status=400)
         self.requests.append(body)
+        self.headers.append({k.lower(): v for k, v in request.headers.items()})
+        refused = self.refuse(request)
+        if refused is not None:
+            return refused
         self._in_flight += 1
         self.max_in_flight = max(self.max_in_flight, self._in_flight)
         try:
@@ -71,10 +76,15 @@ class FakeOllama:
             return web.Response(status=status, text=payload, content_type="application/json", headers=headers)
         return web.json_response(payload, status=status, headers=headers)
 
+    def refuse(self, request: web.Request) -> web.StreamResponse | None:
+        """An answer given before the responder sees the request (authentication); None: go on."""
+        return None
+
     async def __aenter__(self) -> FakeOllama:
         app = web.Application()
         app.router.add_post("/api/chat", self._chat)
         app.router.add_post("/v1/chat/completions", self._chat)  # the OpenAI-compatible route
+        app.router.add_post("/v1/messages", self._chat)  # Anthropic's Messages API
         self._runner = web.AppRunner(app)
         await self._runner.setup()
         site = web.TCPSite(self._runner, "127.0.0.1", 0)

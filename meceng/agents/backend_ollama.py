@@ -39,7 +39,7 @@ class OllamaBackend(EndpointBackend):
 
     async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
         body: dict[str, Any] = {
-            "model": self.settings.model, "messages": list(request.messages), "stream": False,
+            "model": self.settings.model, "messages": _wire_messages(request.messages), "stream": False,
             "options": self.settings.options(), "keep_alive": self.settings.keep_alive,
         }
         if self.settings.think is not None:
@@ -73,6 +73,24 @@ class OllamaBackend(EndpointBackend):
         if self._session is not None:
             await self._session.close()
             self._session = None
+
+
+def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
+    """The agent's conversation in Ollama's form: calls as ``function`` objects with argument
+    dicts, results named by ``tool_name``."""
+    wire = []
+    for message in messages:
+        if message["role"] == "tool":
+            wire.append({"role": "tool", "tool_name": message["name"], "content": message["content"]})
+        elif message["role"] == "assistant":
+            turn: dict[str, Any] = {"role": "assistant", "content": message["content"]}
+            if message.get("tool_calls"):
+                turn["tool_calls"] = [{"function": {"name": c["name"], "arguments": c["arguments"]}}
+                                      for c in message["tool_calls"]]
+            wire.append(turn)
+        else:
+            wire.append(message)
+    return wire
 
 
 def _error_text(payload: bytes) -> str:

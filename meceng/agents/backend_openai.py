@@ -1,4 +1,11 @@
-"""The OpenAI-compatible backend: ``/v1/chat/completions`` (vLLM, SGLang, llama.cpp server)."""
+"""The OpenAI backend: ``/v1/chat/completions`` of OpenAI's API and of compatible servers (vLLM,
+SGLang, llama.cpp server).
+
+Hand-written on httpx rather than on the ``openai`` SDK: the scheduler already does what the SDK
+would add (retries with Retry-After, per-endpoint slots), the compatible servers answer with
+fields the SDK's types do not declare (``reasoning_content``), and a plain client keeps one
+error path for every server.
+"""
 
 from __future__ import annotations
 
@@ -16,24 +23,30 @@ class OpenAIBackend(EndpointBackend):
     """An OpenAI-compatible ``/v1/chat/completions`` server (vLLM, SGLang, llama.cpp server).
 
     Same scheduler as Ollama; ``hosts`` are base URLs ending in ``/v1``. Sends
-    ``max_completion_tokens``, ``temperature``, ``seed`` and, when thinking is set, ``reasoning_effort``;
-    reads ``reasoning_content`` / ``reasoning`` and ``finish_reason`` (``length`` = truncated).
+    ``max_completion_tokens``, ``temperature`` and ``seed`` (neither with ``api_defaults``: OpenAI's
+    reasoning models refuse any temperature but their default) and, when thinking is low, medium
+    or high, ``reasoning_effort``; reads ``reasoning_content`` / ``reasoning``, ``finish_reason``
+    (``length`` = truncated) and the reasoning tokens of ``usage.completion_tokens_details``.
     """
 
     name = "openai"
 
     def __init__(self, settings: LLMSettings, api_key: str | None = None) -> None:
+        if not api_key and any("api.openai.com" in host for host in settings.hosts):
+            raise ValueError(f"OpenAI's API needs a key: set {settings.api_key_env or 'OPENAI_API_KEY'}")
         headers = {"Authorization": f"Bearer {api_key}"} if api_key else {}
         super().__init__(settings, client_factory=lambda host: httpx.AsyncClient(
             base_url=host.rstrip("/"), timeout=settings.timeout_s, headers=headers))
 
     async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
         body: dict[str, Any] = {
-            "model": self.settings.model, "messages": list(request.messages), "stream": False,
-            "temperature": self.settings.temperature, "max_completion_tokens": self.settings.num_predict,
+            "model": self.settings.model, "messages": _wire_messages(request.messages), "stream": False,
+            "max_completion_tokens": self.settings.num_predict,
         }
-        if self.settings.seed is not None:
-            body["seed"] = self.settings.seed
+        if not self.settings.api_defaults:
+            body["temperature"] = self.settings.temperature
+            if self.settings.seed is not None:
+                body["seed"] = self.settings.seed
         if isinstance(self.settings.think, str):
             body["reasoning_effort"] = self.settings.think
         if request.tools:
@@ -78,6 +91,7 @@ class OpenAIBackend(EndpointBackend):
             done_reason=choice.get("finish_reason"),
             prompt_tokens=int(usage.get("prompt_tokens") or 0),
             completion_tokens=int(usage.get("completion_tokens") or 0),
+            reasoning_tokens=int((usage.get("completion_tokens_details") or {}).get("reasoning_tokens") or 0),
             total_duration_s=wall,
             wall_time_s=wall,
             endpoint=host,
@@ -86,3 +100,22 @@ class OpenAIBackend(EndpointBackend):
     async def aclose(self) -> None:
         for endpoint in self.endpoints:
             await endpoint.client.aclose()
+
+
+def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
+    """The agent's conversation in OpenAI's form: calls with ids and JSON-string arguments,
+    results answering a ``tool_call_id``."""
+    wire = []
+    for message in messages:
+        if message["role"] == "tool":
+            wire.append({"role": "tool", "tool_call_id": message["tool_call_id"], "content": message["content"]})
+        elif message["role"] == "assistant":
+            turn: dict[str, Any] = {"role": "assistant", "content": message["content"]}
+            if message.get("tool_calls"):
+                turn["tool_calls"] = [{"id": c["id"], "type": "function",
+                                       "function": {"name": c["name"], "arguments": json.dumps(c["arguments"])}}
+                                      for c in message["tool_calls"]]
+            wire.append(turn)
+        else:
+            wire.append(message)
+    return wire

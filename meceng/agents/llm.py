@@ -1,11 +1,16 @@
 """Language-model backends behind one async interface: settings, requests, answers, errors.
 
 ``ollama`` talks to one or more Ollama servers (``/api/chat``, ``stream: false``) over aiohttp;
-``gold`` answers every request with the ground truth, which proves the harness end to end on a
-machine without a model (like SWE-bench's gold patches).
+``openai`` to OpenAI's API or an OpenAI-compatible server (vLLM, SGLang); ``anthropic`` to
+Anthropic's Messages API; ``gold`` answers every request with the ground truth, which proves the
+harness end to end on a machine without a model (like SWE-bench's gold patches).
 
-The types every backend shares live here; the per-endpoint scheduler (slots, retries) in
-``scheduler.py``; the HTTP backends in ``backend_ollama.py`` and ``backend_openai.py``.
+The types every backend shares live here, among them the one message format the agent loop
+writes (each backend translates it to its wire format); the per-endpoint scheduler (slots,
+retries) in ``scheduler.py``; the HTTP backends in ``backend_*.py``.
+
+API keys are read from the environment when a backend is made and are never part of the
+settings, so no run file can hold one.
 """
 
 from __future__ import annotations
@@ -53,6 +58,9 @@ class LLMSettings:
     # hosted APIs "with default API settings" (paper, Tables 2 and 6): neither temperature nor seed is
     # sent (OpenAI's reasoning models refuse temperature 0 with a 400)
     api_defaults: bool = False
+    # the environment variable holding the API key (None: the backend's conventional one); the name
+    # is a setting, the key never is
+    api_key_env: str | None = None
 
     def options(self) -> dict[str, Any]:
         opts: dict[str, Any] = {
@@ -70,7 +78,7 @@ class LLMSettings:
             "temperature": self.temperature, "seed": self.seed, "think": self.think,
             "num_ctx": self.num_ctx, "num_predict": self.num_predict, "keep_alive": self.keep_alive,
             "batch_size": self.batch_size, "timeout_s": self.timeout_s, "max_attempts": self.max_attempts,
-            "api_defaults": self.api_defaults,
+            "api_defaults": self.api_defaults, "api_key_env": self.api_key_env,
         }
 
 
@@ -115,10 +123,12 @@ class ChatResponse:
     attempts: int = 1
     endpoint: str = ""
     tool_calls: tuple[ToolCall, ...] = ()
+    reasoning_tokens: int = 0  # of completion_tokens, where the API says (OpenAI's reasoning models)
+    signature: str = ""  # Anthropic's signature of the thinking, sent back with it in a tool-use turn
 
     @property
     def truncated(self) -> bool:
-        return self.done_reason == "length"
+        return self.done_reason in ("length", "max_tokens")
 
     @property
     def context_used(self) -> int:
@@ -130,6 +140,7 @@ class ChatResponse:
             "truncated": self.truncated,
             "prompt_tokens": self.prompt_tokens,
             "completion_tokens": self.completion_tokens,
+            "reasoning_tokens": self.reasoning_tokens,
             "context_used": self.context_used,
             "total_duration_s": round(self.total_duration_s, 4),
             "load_duration_s": round(self.load_duration_s, 4),
@@ -174,6 +185,20 @@ class GoldBackend:
         return None
 
 
+BACKENDS = ("ollama", "openai", "anthropic", "gold")
+DEFAULT_HOSTS = {"ollama": "http://127.0.0.1:11434", "openai": "https://api.openai.com/v1",
+                 "anthropic": "https://api.anthropic.com", "gold": "gold"}
+KEY_VARIABLES = {"openai": "OPENAI_API_KEY", "anthropic": "ANTHROPIC_API_KEY"}
+
+
+def api_key(settings: LLMSettings) -> str | None:
+    """The key from the environment variable the settings name, or the backend's conventional one."""
+    import os
+
+    variable = settings.api_key_env or KEY_VARIABLES.get(settings.backend)
+    return os.environ.get(variable) if variable else None
+
+
 def make_backend(settings: LLMSettings) -> Backend:
     if settings.backend == "gold":
         return GoldBackend()
@@ -182,12 +207,35 @@ def make_backend(settings: LLMSettings) -> Backend:
 
         return OllamaBackend(settings)
     if settings.backend == "openai":
-        import os
-
         from meceng.agents.backend_openai import OpenAIBackend
 
-        return OpenAIBackend(settings, api_key=os.environ.get("MECENG_OPENAI_API_KEY"))
-    raise ValueError(f"unknown backend {settings.backend!r} (choose gold, ollama or openai)")
+        return OpenAIBackend(settings, api_key=api_key(settings))
+    if settings.backend == "anthropic":
+        from meceng.agents.backend_anthropic import AnthropicBackend
+
+        return AnthropicBackend(settings, api_key=api_key(settings))
+    raise ValueError(f"unknown backend {settings.backend!r} (choose {', '.join(BACKENDS)})")
+
+
+# ----------------------------------------------------------------------------- the agent's messages
+# One format for a conversation with tools, written by the agent loop; every backend translates
+# it to its own wire format (Ollama, OpenAI and Anthropic differ in how calls and results look).
+
+
+def assistant_message(response: ChatResponse) -> dict[str, Any]:
+    """The model's turn as the conversation keeps it: text, tool calls (with their ids) and, for
+    Anthropic, the signed thinking that must go back with a tool-use turn."""
+    message: dict[str, Any] = {"role": "assistant", "content": response.content}
+    if response.tool_calls:
+        message["tool_calls"] = [call.to_json() for call in response.tool_calls]
+    if response.signature:
+        message["thinking"], message["signature"] = response.thinking, response.signature
+    return message
+
+
+def tool_message(call: ToolCall, result: str) -> dict[str, Any]:
+    """A tool's answer to one call."""
+    return {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
 
 
 def user_messages(*texts: str) -> tuple[dict[str, str], ...]:

@@ -1,20 +1,20 @@
 """The self-validating agent: the model writes a program, calls the simulator as a tool, reads
 what it reports and repairs the program before it answers.
 
-The conversation runs through the backend's native tool calling (Ollama ``tools`` /
-``message.tool_calls``, OpenAI ``tools`` / ``tool_calls``). It is bounded by ``max_rounds`` model
+The conversation runs through the backend's native tool calling (Ollama and OpenAI ``tools`` /
+``tool_calls``, Anthropic ``tool_use`` / ``tool_result`` blocks); the loop writes one message format
+(``assistant_message``, ``tool_message``) and the backend translates it. It is bounded by ``max_rounds`` model
 calls and a completion-token budget. The first program the model produced and the final one are
 both kept, so the benchmark can count what the loop adds.
 """
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from typing import Any
 
 from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMError, ToolCall
+from meceng.agents.llm import Backend, ChatRequest, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
 from meceng.agents.prompts import DEFAULT_CODE, code_prompt, gold_code
 from meceng.agents.steps import Selection
@@ -57,25 +57,6 @@ class AgentResult:
             "completion_tokens": self.completion_tokens, "prompt_tokens": self.prompt_tokens,
             "transcript": self.transcript, "infrastructure_error": self.infrastructure_error,
         }
-
-
-def _assistant_message(backend: Backend, response: ChatResponse) -> dict[str, Any]:
-    message: dict[str, Any] = {"role": "assistant", "content": response.content}
-    if response.tool_calls:
-        if backend.name == "openai":
-            message["tool_calls"] = [{"id": c.id, "type": "function",
-                                      "function": {"name": c.name, "arguments": json.dumps(c.arguments)}}
-                                     for c in response.tool_calls]
-        else:
-            message["tool_calls"] = [{"function": {"name": c.name, "arguments": c.arguments}}
-                                     for c in response.tool_calls]
-    return message
-
-
-def _tool_message(backend: Backend, call: ToolCall, result: str) -> dict[str, Any]:
-    if backend.name == "openai":
-        return {"role": "tool", "tool_call_id": call.id, "content": result}
-    return {"role": "tool", "tool_name": call.name, "content": result}
 
 
 async def run_agent(
@@ -121,14 +102,14 @@ async def run_agent(
             else:
                 stop, error = "answered", extracted.error
             break
-        messages.append(_assistant_message(backend, response))
+        messages.append(assistant_message(response))
         for call in response.tool_calls:
             code = call.arguments.get("code") if isinstance(call.arguments, dict) else None
             if isinstance(code, str) and code.strip():
                 first_code = first_code or code
                 last_code = code
             result = await toolbox.call(call.name, call.arguments if isinstance(call.arguments, dict) else {})
-            messages.append(_tool_message(backend, call, result))
+            messages.append(tool_message(call, result))
             transcript.append({"role": "tool", "name": call.name, "content": result})
         if completion >= token_budget:
             stop = "token_budget"

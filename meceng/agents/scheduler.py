@@ -2,7 +2,7 @@
 
 At most ``batch_size`` requests are in flight per endpoint (a server queues silently beyond its
 parallel slots, then answers 503); code requests go before selections; transient failures —
-connection errors, timeouts, 408/429/5xx — are retried with exponential backoff or after the
+connection errors, timeouts, 408/429/5xx (529 included) — are retried with exponential backoff or after the
 server's Retry-After; other 4xx errors (unknown model, unsupported option) are permanent. An
 endpoint that keeps failing is taken out for a while.
 """
@@ -22,7 +22,8 @@ from meceng.logs import get_logger
 
 log = get_logger(__name__)
 
-TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504})
+# 529: Anthropic's "overloaded"
+TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504, 529})
 
 
 class PrioritySlots:

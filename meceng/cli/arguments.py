@@ -10,7 +10,7 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from meceng.agents.llm import LLMSettings
+from meceng.agents.llm import BACKENDS, DEFAULT_HOSTS, LLMSettings
 from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
 
 if TYPE_CHECKING:
@@ -47,11 +47,18 @@ def parse_think(text: str) -> bool | str:
 
 def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model", default="gold", help="model name (Ollama name, or 'gold')")
-    parser.add_argument("--backend", choices=("ollama", "openai", "gold"), default=None,
+    parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LLM backend; default: gold for --model gold, else ollama")
     parser.add_argument("--host", "--base-url", action="append", default=None, dest="host",
-                        help="server URL (Ollama: http://127.0.0.1:11434; openai: http://HOST:PORT/v1); "
-                             "repeat for several servers")
+                        help="server URL (default per backend: ollama http://127.0.0.1:11434, openai "
+                             "https://api.openai.com/v1 or http://HOST:PORT/v1 for vLLM/SGLang, anthropic "
+                             "https://api.anthropic.com); repeat for several servers")
+    parser.add_argument("--api-defaults", action="store_true",
+                        help="send neither temperature nor seed: the API's default sampling (paper, Tables 2 "
+                             "and 6); always so for anthropic, whose API refuses sampling parameters")
+    parser.add_argument("--api-key-env", default=None, metavar="VARIABLE",
+                        help="environment variable holding the API key (default OPENAI_API_KEY, "
+                             "ANTHROPIC_API_KEY); the key itself is never written anywhere")
     parser.add_argument("--temperature", type=float, default=0.0)
     parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
     parser.add_argument("--think", type=parse_think, default=False, help="on/off or low/medium/high")
@@ -94,7 +101,8 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
     if model == "gold":
         backend = "gold"
     return LLMSettings(
-        model=model, backend=backend, hosts=tuple(args.host or ("http://127.0.0.1:11434",)),
+        model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
+        api_defaults=args.api_defaults or backend == "anthropic", api_key_env=args.api_key_env,
         temperature=args.temperature if temperature is None else temperature, seed=args.llm_seed,
         think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
         batch_size=args.batch_size, timeout_s=args.llm_timeout,

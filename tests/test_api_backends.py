@@ -1,0 +1,248 @@
+"""The hosted-API backends against fake servers on 127.0.0.1 that speak the real wire formats:
+Anthropic's Messages API (through the official SDK) and OpenAI's chat completions with the API's
+default settings. Runs through the command line as a user starts them, the agent loop with native
+tool calls, retries, truncation, and no API key in any file a run writes."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import os
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+from fake_anthropic import FakeAnthropic, anthropic_error, anthropic_reply
+from fake_ollama import FakeOllama, openai_reply
+
+from meceng.agents.backend_anthropic import AnthropicBackend, thinking_budget
+from meceng.agents.llm import ChatRequest, LLMError, LLMSettings, user_messages
+from meceng.agents.prompts import gold_code, gold_selection
+from meceng.pipeline import RunSettings, run_benchmark
+from meceng.tasks.registry import default_registry
+
+SENTINEL = "sk-SENTINEL-7f3a9c21e4b8"
+
+
+def instances(slugs: tuple[str, ...], seeds: int = 1) -> dict[str, Any]:
+    """Description -> instance, an assembly's parts included (a prompt holds its description)."""
+    out = {}
+    for slug in slugs:
+        for seed in range(seeds):
+            instance = default_registry().get(slug).instance(seed)
+            out[instance.description] = instance
+            for _, part in instance.parts or ():
+                out[part.description] = part
+    return out
+
+
+def prompt_of(body: dict[str, Any]) -> str:
+    content = body["messages"][0]["content"]
+    return content if isinstance(content, str) else json.dumps(content)
+
+
+def gold_answer(known: dict[str, Any], body: dict[str, Any]) -> tuple[str, Any]:
+    prompt = prompt_of(body)
+    instance = next(inst for desc, inst in known.items() if desc in prompt)
+    if "<components>" in prompt:
+        return "select", gold_selection(instance.required_components)
+    return "code", gold_code(instance.reference_program)
+
+
+def anthropic_settings(url: str, **changes: Any) -> LLMSettings:
+    return LLMSettings(**{"model": "claude-x", "backend": "anthropic", "hosts": (url,), "api_defaults": True,
+                          "backoff_s": 0.01, **changes})
+
+
+async def test_anthropic_request_retries_and_answer(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("ANTHROPIC_API_KEY", "sk-ant-test")
+    script = [anthropic_error(529, "overloaded_error", "Overloaded"),
+              (*anthropic_error(429, "rate_limit_error", "rate limited")[:2], {"retry-after": "0"}),
+              (200, anthropic_reply("<components>MassPoint</components>", stop_reason="max_tokens",
+                                    input_tokens=300, output_tokens=40), {})]
+    async with FakeAnthropic(lambda body: script.pop(0)) as server:
+        settings = anthropic_settings(server.url, num_predict=777)
+        backend = AnthropicBackend(settings, api_key="sk-ant-test")
+        response = await backend.chat(ChatRequest(user_messages("choose"), "select", "t@0"))
+        await backend.aclose()
+    assert response.attempts == 3 and response.content == "<components>MassPoint</components>"
+    assert response.truncated and response.prompt_tokens == 300 and response.completion_tokens == 40
+    body, headers = server.requests[-1], server.headers[-1]
+    assert body["max_tokens"] == 777 and body["model"] == "claude-x" and body["thinking"] == {"type": "disabled"}
+    assert "temperature" not in body and "seed" not in body and "top_p" not in body
+    assert headers["anthropic-version"] and "sk-ant-test" in (headers.get("x-api-key", "")
+                                                             + headers.get("authorization", ""))
+
+
+@pytest.mark.parametrize(("status", "kind"), [(400, "invalid_request_error"), (404, "not_found_error")])
+async def test_anthropic_permanent_errors_are_not_retried(status: int, kind: str) -> None:
+    async with FakeAnthropic(lambda body: anthropic_error(status, kind, "model: claude-nope")) as server:
+        backend = AnthropicBackend(anthropic_settings(server.url), api_key="sk-ant-test")
+        with pytest.raises(LLMError) as caught:
+            await backend.chat(ChatRequest(user_messages("x"), "code", "t@0"))
+        await backend.aclose()
+    assert len(server.requests) == 1 and not caught.value.transient and caught.value.status == status
+    assert kind in str(caught.value) and "claude-nope" in str(caught.value)
+
+
+async def test_anthropic_wrong_key_is_an_infrastructure_error_not_retried() -> None:
+    async with FakeAnthropic(lambda body: (200, anthropic_reply("never"), {})) as server:
+        backend = AnthropicBackend(anthropic_settings(server.url), api_key="sk-ant-wrong")
+        with pytest.raises(LLMError) as caught:
+            await backend.chat(ChatRequest(user_messages("x"), "code", "t@0"))
+        await backend.aclose()
+    assert caught.value.status == 401 and "authentication_error" in str(caught.value)
+    assert len(server.requests) == 1
+
+
+def test_anthropic_without_key_says_which_variable(monkeypatch: pytest.MonkeyPatch) -> None:
+    from meceng.agents.llm import make_backend
+
+    monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
+    with pytest.raises(ValueError, match="ANTHROPIC_API_KEY"):
+        make_backend(anthropic_settings("http://127.0.0.1:9"))
+    monkeypatch.setenv("MY_KEY", "k")
+    assert make_backend(anthropic_settings("http://127.0.0.1:9", api_key_env="MY_KEY")).name == "anthropic"
+
+
+@pytest.mark.parametrize(("think", "num_predict", "max_tokens", "budget"),
+                         [(True, 7680, 7680, 5760), ("low", 7680, 7680, 1920), (True, 1000, 2048, 1024)])
+def test_thinking_budget_fits_the_answer_limit(think: bool | str, num_predict: int, max_tokens: int,
+                                               budget: int) -> None:
+    got_max, thinking = thinking_budget(LLMSettings(think=think, num_predict=num_predict))
+    assert got_max == max_tokens and thinking == {"type": "enabled", "budget_tokens": budget}
+    assert thinking["budget_tokens"] >= 1024 and got_max - thinking["budget_tokens"] >= 1024
+
+
+async def test_anthropic_agent_loop_with_tool_use_and_thinking(tmp_path: Path,
+                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    """The agent simulates a broken program through a tool_use block, reads the tool_result and
+    answers with the repaired one; the signed thinking goes back with the tool-use turn."""
+    monkeypatch.setenv("ANTHROPIC_API_KEY", "sk-ant-test")
+    known = instances(("single_mass_oscillator",))
+    instance = next(iter(known.values()))
+    broken = instance.reference_program.replace("mass=mass)", "mas=mass)")
+
+    def responder(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        purpose, answer = gold_answer(known, body)
+        if purpose == "select":
+            return 200, anthropic_reply(answer), {}
+        if len(body["messages"]) == 1:
+            return 200, anthropic_reply("Let me test it.", thinking="Test before answering.", thinking_tokens=30,
+                                        tool_uses=({"id": "toolu_01", "name": "simulate", "input": {"code": broken}},),
+                                        stop_reason="tool_use"), {}
+        return 200, anthropic_reply("Fixed.\n" + answer), {}
+
+    async with FakeAnthropic(responder) as server:
+        llm = anthropic_settings(server.url, think=True, num_predict=4096)
+        settings = RunSettings(llm=llm, only=("single_mass_oscillator",), variations=1, out=tmp_path, run_name="a",
+                               progress=False, agent="loop", max_rounds=3, workers=1)
+        run = json.loads((await run_benchmark(settings)).read_text())
+    task = run["tasks"][0]
+    assert task["overall"] is True and task["agent"]["tool_calls"] == {"simulate": 1}
+    assert task["agent"]["first_overall"] is False  # the first program was the broken one
+    second = server.requests[-1]
+    assert second["tools"][0]["input_schema"]["type"] == "object"
+    assert second["thinking"] == {"type": "enabled", "budget_tokens": 3072}
+    turn, results = second["messages"][1], second["messages"][2]
+    assert [b["type"] for b in turn["content"]] == ["thinking", "text", "tool_use"]
+    assert turn["content"][0]["signature"] and turn["content"][2]["id"] == "toolu_01"
+    assert results["role"] == "user" and results["content"][0]["type"] == "tool_result"
+    assert results["content"][0]["tool_use_id"] == "toolu_01"
+    assert "mas" in results["content"][0]["content"]  # the simulator's error about the wrong keyword
+    meta = task["agent"]["transcript"][1]["meta"]
+    assert meta["reasoning_tokens"] == 30 and meta["thinking_chars"] > 0
+
+
+async def test_openai_api_defaults_and_reasoning_tokens(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from meceng.agents.llm import make_backend
+
+    monkeypatch.setenv("OPENAI_API_KEY", "sk-openai-test")
+    known = instances(("single_pendulum",))
+
+    def responder(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        if "temperature" in body:  # as OpenAI's reasoning models answer
+            return 400, {"error": {"message": "Unsupported value: 'temperature'", "type": "invalid_request_error",
+                                   "param": "temperature", "code": "unsupported_value"}}, {}
+        reply = openai_reply(gold_answer(known, body)[1], completion_tokens=500)
+        reply["usage"]["completion_tokens_details"] = {"reasoning_tokens": 320}
+        return 200, reply, {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="gpt-x", backend="openai", hosts=(server.url + "/v1",), api_defaults=True)
+        settings = RunSettings(llm=llm, only=("single_pendulum",), variations=1, out=tmp_path, run_name="o",
+                               progress=False)
+        run = json.loads((await run_benchmark(settings, backend=make_backend(llm))).read_text())
+    task = run["tasks"][0]
+    assert task["overall"] is True and task["generation"]["meta"]["reasoning_tokens"] == 320
+    assert all("temperature" not in b and "seed" not in b for b in server.requests)
+    assert all(h["authorization"] == "Bearer sk-openai-test" for h in server.headers)
+
+
+async def cli_run(tmp_path: Path, name: str, backend: str, url: str, *extra: str,
+                  levels: str = "1,2", only: str = "single_mass_oscillator,single_pendulum") -> tuple[int, str]:
+    env = {**os.environ, "OPENAI_API_KEY": SENTINEL, "ANTHROPIC_API_KEY": SENTINEL}
+    proc = await asyncio.create_subprocess_exec(
+        sys.executable, "-m", "meceng", "run", "--backend", backend, "--base-url", url, "--model", "claude-x",
+        "--levels", levels, "--only", only, "--variations", "1", "--out", str(tmp_path), "--name", name,
+        "--no-progress", *extra, env=env, stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.STDOUT)
+    output, _ = await asyncio.wait_for(proc.communicate(), timeout=600)
+    return proc.returncode or 0, output.decode()
+
+
+def assert_no_key_in(folder: Path, output: str) -> None:
+    files = [p for p in folder.rglob("*") if p.is_file()]
+    assert len(files) > 5 and SENTINEL not in output
+    leaking = [str(p) for p in files if SENTINEL.encode() in p.read_bytes()]
+    assert leaking == []
+
+
+@pytest.mark.parametrize("agent", ["pipeline", "loop"])
+async def test_cli_runs_on_both_apis_grade_like_ollama_and_keep_no_key(tmp_path: Path, agent: str) -> None:
+    """``meceng run --backend anthropic|openai --base-url ...`` as a user starts it, with a sentinel
+    key in the environment: graded 100 % with right answers, and the key is in no file of the run."""
+    known = instances(("single_mass_oscillator", "single_pendulum"))
+
+    def answer_anthropic(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        return 200, anthropic_reply(gold_answer(known, body)[1]), {}
+
+    def answer_openai(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        if "temperature" in body:
+            return 400, {"error": {"message": "Unsupported value: 'temperature'", "type": "invalid_request_error"}}, {}
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    async with FakeAnthropic(answer_anthropic, key=SENTINEL) as claude, FakeOllama(answer_openai) as gpt:
+        ran = await asyncio.gather(
+            cli_run(tmp_path, "claude", "anthropic", claude.url, "--agent", agent),
+            cli_run(tmp_path, "gpt", "openai", gpt.url + "/v1", "--api-defaults", "--agent", agent))
+    for (code, output), name in zip(ran, ("claude", "gpt"), strict=True):
+        assert code == 0, output
+        run = json.loads((tmp_path / name / "run.json").read_text())
+        assert run["summary"]["counted"] == 2 and run["summary"]["rates"]["overall"] == 1.0, output
+        assert run["settings"]["llm"]["api_defaults"] is True
+        assert_no_key_in(tmp_path / name, output)
+    assert all(h["authorization"] == f"Bearer {SENTINEL}" for h in gpt.headers)
+
+
+async def test_cli_level3_runs_on_both_apis(tmp_path: Path) -> None:
+    """A part and the assembly that loads it, through both APIs: graded like the Ollama path."""
+    known = instances(("cantilever_beam",))
+
+    def answer_anthropic(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        return 200, anthropic_reply(gold_answer(known, body)[1]), {}
+
+    def answer_openai(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    async with FakeAnthropic(answer_anthropic, key=SENTINEL) as claude, FakeOllama(answer_openai) as gpt:
+        ran = await asyncio.gather(
+            cli_run(tmp_path, "claude", "anthropic", claude.url, levels="3b", only="cantilever_beam"),
+            cli_run(tmp_path, "gpt", "openai", gpt.url + "/v1", "--api-defaults", levels="3b",
+                    only="cantilever_beam"))
+    for (code, output), name in zip(ran, ("claude", "gpt"), strict=True):
+        assert code == 0, output
+        run = json.loads((tmp_path / name / "run.json").read_text())
+        levels = run["summary"]["levels"]
+        assert levels["3a"]["rates"]["overall"] == 1.0 and levels["3b"]["rates"]["overall"] == 1.0, output
+        assert_no_key_in(tmp_path / name, output)
