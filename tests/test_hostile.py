@@ -129,3 +129,18 @@ async def test_hostile_program_is_contained(name: str, tmp_path: Path, listener,
     assert list(scratch_root.iterdir()) == []  # scratch removed
     with pytest.raises(TimeoutError):  # nothing ever connected to the listener
         listener.accept()
+
+
+async def test_sensor_files_are_not_written_anywhere(tmp_path: Path, pool) -> None:
+    """Exudyn writes sensor files from C++, past the audit hook: the harness switches them off, so
+    a sensor aimed outside the scratch folder writes nothing and the program still solves."""
+    target = tmp_path / "outside" / "sensor.txt"
+    target.parent.mkdir()
+    scratch_root = tmp_path / "scratch"
+    scratch_root.mkdir()
+    program = MODEL.replace("mbs.Assemble()", "n = mbs.GetObject(0)['nodeNumber']\n"
+                            f"mbs.AddSensor(SensorNode(nodeNumber=n, fileName={str(target)!r}, writeToFile=True,"
+                            " outputVariableType=exu.OutputVariableType.Position))\nmbs.Assemble()")
+    result = await execute(program, SIM, ExecutionLimits(timeout_s=20.0), scratch_root=scratch_root, pool=pool)
+    assert result.solved, result.error
+    assert not target.exists() and list(target.parent.iterdir()) == []

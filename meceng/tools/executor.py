@@ -61,6 +61,7 @@ class Execution:
     stage: str
     error: str | None = None
     error_kind: str | None = None
+    error_line: int | None = None  # the program's line the error was raised at
     items: dict[str, list[dict[str, Any]]] | None = None
     system: dict[str, Any] = field(default_factory=dict)
     times: np.ndarray | None = None
@@ -91,6 +92,7 @@ class Execution:
             "stage": self.stage,
             "error": self.error,
             "error_kind": self.error_kind,
+            "error_line": self.error_line,
             "warnings": list(self.warnings),
             "returncode": self.returncode,
             "wall_time": round(self.wall_time, 4),
@@ -323,6 +325,7 @@ def _collect(
         stage=str(result.get("stage", last_stage)),
         error=error,
         error_kind="exception" if error else None,
+        error_line=result.get("error_line") if error else None,
         items=result.get("items"),
         system=result.get("system") or {},
         times=times,

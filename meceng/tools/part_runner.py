@@ -99,7 +99,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
         set_guard(True)
         exec(compile(job["program"], str(workdir / "program.py"), "exec"), namespace)
     except BaseException as exc:  # every error of the program is a verdict
-        result.update(error=describe_exception(exc)["error"], error_type=type(exc).__name__)
+        result.update(describe_exception(exc, workdir, job["program"]))
     finally:
         set_guard(False)
     result["program_time"] = time.perf_counter() - t0
@@ -112,7 +112,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
             if job.get("save_fem"):  # the reduced part, for the assemblies (FEMinterface's own format)
                 fem.SaveToFile(str(workdir / f"fem-{token}.npz"))
         except Exception as exc:  # a half-built part is a verdict too
-            reason = describe_exception(exc)["error"]
+            reason = describe_exception(exc, workdir, job["program"])["error"]
             result.update(error=f"could not read the part: {reason}", error_type=type(exc).__name__)
     result.update(stage=state["stage"], warnings=warnings, token=token, part_times=times)
     tmp = workdir / f"result-{token}.json.tmp"

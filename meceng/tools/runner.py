@@ -23,13 +23,13 @@ import json
 import os
 import sys
 import time
-import traceback
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from meceng.tools import guard
+from meceng.tools.errors import PROGRAM_NAME, program_error
 
 
 class HandOver(BaseException):
@@ -89,7 +89,8 @@ class Harness:
             "GetODE2CoordinatesTotal", "NumberOfNodes", "NumberOfObjects", "NumberOfMarkers", "NumberOfLoads",
             "NumberOfSensors")}
         self.api.update({name: getattr(main_system, name) for name in (
-            "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "ComputeSystemDegreeOfFreedom")})
+            "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter",
+            "ComputeSystemDegreeOfFreedom")})
         main_system.Assemble = assemble
         main_system.SetPostStepUserFunction = set_post_step
         import exudyn.solver as solver
@@ -135,6 +136,10 @@ class Harness:
 
         for target, name, original in self._solver_patches:
             setattr(target, name, original)
+        # sensor files are written from C++, past the audit hook, to any path the program named:
+        # none are written (the harness records the coordinates itself)
+        for index in range(self.api["NumberOfSensors"](mbs.systemData)):
+            self.api["SetSensorParameter"](mbs, index, "writeToFile", False)
         self._original_set_post(mbs, record)
         namespace["mbs"] = mbs
         namespace["exu"] = exudyn
@@ -221,12 +226,12 @@ def run(job_path: Path) -> int:
         _write_result(workdir, result, harness)
         return 3
 
-    namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(workdir / "program.py")}
+    namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(workdir / PROGRAM_NAME)}
     program_error: BaseException | None = None
     if job.get("guard", True):
         harness.guard = guard.install(str(workdir), harness.warnings.append)
     try:
-        code = compile(job["program"], str(workdir / "program.py"), "exec")
+        code = compile(job["program"], str(workdir / PROGRAM_NAME), "exec")
         harness.guard(True)
         exec(code, namespace)
     except HandOver:
@@ -239,12 +244,13 @@ def run(job_path: Path) -> int:
         harness.guard(False)
 
     if program_error is not None and harness.stage != "finished_assemble":
-        result.update(describe_exception(program_error), stage=harness.stage)
+        result.update(describe_exception(program_error, workdir, job["program"]), stage=harness.stage)
         result["program_time"] = time.perf_counter() - t_start
         _write_result(workdir, result, harness)
         return 0
     if program_error is not None:
-        harness.warnings.append(f"program raised after assemble: {describe_exception(program_error)['error']}")
+        harness.warnings.append(
+            f"program raised after assemble: {describe_exception(program_error, workdir, job['program'])['error']}")
     if harness.mbs is None or harness.stage not in ("finished_assemble",):
         result.update(stage=harness.stage, error="the program never called mbs.Assemble()",
                       error_type="NoAssemble")
@@ -261,7 +267,7 @@ def run(job_path: Path) -> int:
         harness.guard(True)  # the program's user functions run inside the solver
         harness.solve(job["sim_block"], namespace)
     except BaseException as exc:
-        result.update(describe_exception(exc))
+        result.update(describe_exception(exc, workdir, job["program"]))
     finally:
         harness.guard(False)
     result["solve_time"] = time.perf_counter() - t_solve
@@ -270,13 +276,9 @@ def run(job_path: Path) -> int:
     return 0
 
 
-def describe_exception(exc: BaseException) -> dict[str, Any]:
-    if isinstance(exc, SystemExit):
-        return {"error": f"program called exit({exc.code!r})", "error_type": "SystemExit"}
-    tb = traceback.format_exception(type(exc), exc, exc.__traceback__)
-    text = "".join(tb)
-    return {"error": f"{type(exc).__name__}: {exc}", "error_type": type(exc).__name__,
-            "traceback": text[-4000:]}
+def describe_exception(exc: BaseException, workdir: Path, program: str) -> dict[str, Any]:
+    """The program's exception at its own line, without harness frames or this machine's paths."""
+    return program_error(exc, str(workdir / PROGRAM_NAME), program, str(workdir))
 
 
 def _write_result(workdir: Path, result: dict[str, Any], harness: Harness) -> None:
