@@ -5,10 +5,11 @@ A malformed answer is a recorded result (``error`` set), never an exception.
 
 from __future__ import annotations
 
-import ast
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
+
+from meceng.tools.syntax import parse
 
 _THINK = re.compile(r"<think>.*?</think>", re.S | re.I)
 _BLOCK = re.compile(r"<components>(.*?)</components>", re.S | re.I)
@@ -79,7 +80,7 @@ def extract_code(answer: str) -> ExtractedCode:
     stripped = text.strip()
     if "exudyn" in stripped:
         try:
-            ast.parse(stripped)
+            parse(stripped)
         except SyntaxError:
             pass
         else:

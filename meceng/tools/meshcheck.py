@@ -11,6 +11,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
+from meceng.tools.syntax import parse
+
 
 @dataclass(frozen=True)
 class MeshCheck:
@@ -29,7 +31,7 @@ def _literal(node: ast.expr) -> float | None:
 def check_mesh_size(code: str, minimum: float) -> MeshCheck:
     """Find every ``GenerateMesh`` call; require a literal ``maxh``; raise values below ``minimum``."""
     try:
-        tree = ast.parse(code)
+        tree = parse(code)
     except SyntaxError as exc:
         return MeshCheck(None, error=f"syntax error: {exc.msg}")
     calls = [n for n in ast.walk(tree) if isinstance(n, ast.Call)

@@ -32,6 +32,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
+from meceng.tools.syntax import parse
+
 ALLOWED_IMPORT_ROOTS = frozenset(
     {
         "exudyn",
@@ -108,7 +110,7 @@ def check_program(source: str, allowed_imports: frozenset[str] = ALLOWED_IMPORT_
     """Refuse programs that import outside the allow-list, read files, run code from strings,
     reach into the interpreter or write files natively (the module docstring says why these)."""
     try:
-        tree = ast.parse(source)
+        tree = parse(source)
     except SyntaxError as exc:
         return SafetyVerdict(False, f"syntax error: {exc.msg}", exc.lineno)
     numpy_names = _numpy_aliases(tree)
