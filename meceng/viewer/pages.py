@@ -181,8 +181,9 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
                     f" <span class='badge {status}'>{esc(verdict)}</span></h1>",
                     _kv([("run", esc(run_label)), ("key", esc(key)), ("level", esc(record.get("level"))),
                          ("error categories", esc(", ".join(record.get("error_categories", [])) or "none")),
-                         ("solution norm", esc(record.get("solution_norm"))),
-                         ("tokens", esc(record.get("tokens"))), ("timing (s)", esc(record.get("timing"))),
+                         ("solution norm", esc(_number(record.get("solution_norm")))),
+                         ("tokens", esc(_pairs(record.get("tokens"), "{:d}"))),
+                         ("timing (s)", esc(_pairs(record.get("timing"), "{:.2f}", strip="_s"))),
                          ("evaluator", esc(record.get("evaluator")))])]
     if record.get("infrastructure_error"):
         s.append(f"<p class='error'>infrastructure: {esc(record['infrastructure_error'])}</p>")
@@ -237,3 +238,21 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
     return (f"<!doctype html><html><head><meta charset='utf-8'><title>{esc(title)}</title>"
             f"<link rel='stylesheet' href='{esc(root)}static/viewer.css'></head>"
             f"<body class='task'>{''.join(s)}</body></html>")
+
+
+def _number(value: Any) -> str:
+    return "–" if value is None else f"{value:.3g}" if isinstance(value, float) else str(value)
+
+
+def _pairs(block: Any, form: str, strip: str = "") -> str:
+    """``{'llm_s': 0.011, 'evaluation_s': 0.45}`` as ``llm 0.01 · evaluation 0.45``."""
+    if not isinstance(block, dict):
+        return "–" if block is None else str(block)
+    items = []
+    for name, value in block.items():
+        label = name.removesuffix(strip).replace("_", " ")
+        try:
+            items.append(f"{label} {form.format(value)}")
+        except (ValueError, TypeError):
+            items.append(f"{label} {value}")
+    return " · ".join(items) or "–"
