@@ -33,7 +33,9 @@ from meceng.eval.report import (
     series,
     stage_table,
     thinking_table,
+    topology_cause_table,
 )
+from meceng.eval.topology import CAUSES as TOPOLOGY_CAUSES
 
 
 def _save(fig: Any, ax: Any, path: Path) -> None:
@@ -179,6 +181,12 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                       f"{r['mean_per_task']:.2f}"] for r in categories])
     sections.append(("Graph content error categories (Table 5)", md, ht, None))
 
+    causes = topology_cause_table(runs)
+    md, ht = _table(["model", "topology failures", *TOPOLOGY_CAUSES, "not recorded"],
+                    [[r["model"], str(r["failures"]), *[str(r[c]) for c in TOPOLOGY_CAUSES], str(r["unknown"])]
+                     for r in causes])
+    sections.append(("Topology failures by cause (beside Table 5)", md, ht, None))
+
     temperature = series(runs, "temperature")
     if any(len(v) > 1 for v in temperature.values()):
         _line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
@@ -272,6 +280,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
         "stages": [{**{k: v for k, v in r.items() if not isinstance(v, Rate)},
                     **{k: r[k].to_json() for k, _ in RIGID_COLUMNS}} for r in stages],
         "error_categories": categories,
+        "topology_causes": causes,
         "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
                        for r in hard],
     }

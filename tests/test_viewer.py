@@ -118,7 +118,9 @@ def _run_folder(folder: Path, records: list[dict], finished: bool = True) -> Pat
 def test_site_over_a_finished_and_a_running_run(tmp_path: Path) -> None:
     done = _run_folder(tmp_path / "runs" / "model-a", [
         _record("single_pendulum", 0), _record("single_pendulum", 1, failure="solution_match"),
-        _record("n_pendulum", 0, failure="finished_assemble", topology_causes=["a spring is missing"])])
+        _record("n_pendulum", 0, failure="topology_match",
+                topology_causes={"cause": "missing item types", "missing": {"object:ConnectorSpringDamper": 1},
+                                 "surplus": {}, "inert": []})])
     t, q = _trajectory(300, 4)
     save_traces(done, "single_pendulum@1", Execution("solved", times=t, trajectory=q + 0.1),
                 Execution("solved", times=t, trajectory=q))
@@ -146,7 +148,7 @@ def test_site_over_a_finished_and_a_running_run(tmp_path: Path) -> None:
     assert "inertia and mass (1)" in failed and "thinking (3 characters)" in failed
     assert "href='../../../runs/model-a/programs/single_pendulum/seed1_reference.py'" in failed
     causes = (tmp_path / "site" / "tasks" / "r0" / "n_pendulum-0.html").read_text()
-    assert "topology causes" in causes and "a spring is missing" in causes
+    assert "topology: why it differs" in causes and "1x object:ConnectorSpringDamper" in causes
     passed = (tmp_path / "site" / "tasks" / "r0" / "single_pendulum-0.html").read_text()
     assert ".png" not in passed  # a passing record draws no plot
 

@@ -46,6 +46,7 @@ class Verdict:
     differences: tuple[dict[str, Any], ...] = ()
     solution_norm: float | None = None
     infrastructure_error: str | None = None
+    topology_causes: dict[str, Any] | None = None  # why topology_match failed (eval.topology)
 
     @property
     def overall(self) -> bool:
@@ -77,6 +78,7 @@ class Verdict:
             "differences": [_jsonable_difference(d) for d in self.differences[:50]],
             "solution_norm": self.solution_norm,
             "infrastructure_error": self.infrastructure_error,
+            "topology_causes": self.topology_causes,
         }
 
 
@@ -141,7 +143,8 @@ def evaluate_rigid(
     else:
         stages.append(StageResult("solver_success", False, candidate.error or f"stage '{candidate.stage}'"))
         stages.append(StageResult("solution_match", None, "not evaluated: solver failed"))
-    return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm)
+    return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm,
+                   topology_causes=graph.topology.to_json() if graph.topology else None)
 
 
 def _not_applicable(stage: StageResult) -> bool:

@@ -22,6 +22,7 @@ from typing import Any
 import networkx as nx
 
 from meceng.eval.categories import categorize
+from meceng.eval.topology import TopologyCauses, topology_causes
 
 KIND_TYPE_KEY = {"nodes": "nodeType", "objects": "objectType", "markers": "markerType",
                  "loads": "loadType", "sensors": "sensorType"}
@@ -58,6 +59,7 @@ class GraphComparison:
     detail: str
     differences: list[dict[str, Any]] = field(default_factory=list)
     error_categories: list[str] = field(default_factory=list)
+    topology: TopologyCauses | None = None  # why the topology differs, when it does
 
 
 def is_ignored(key: str) -> bool:
@@ -141,12 +143,15 @@ def compare_graphs(
     type_cand = Counter(d["type"] for _, d in g_cand.nodes(data=True))
     type_ref = Counter(d["type"] for _, d in g_ref.nodes(data=True))
     if g_cand.number_of_nodes() != g_ref.number_of_nodes() or g_cand.number_of_edges() != g_ref.number_of_edges():
+        causes = topology_causes(g_cand, g_ref, candidate, reference)
         detail = (f"item/reference counts differ: {g_cand.number_of_nodes()} items and "
                   f"{g_cand.number_of_edges()} references vs {g_ref.number_of_nodes()} and "
-                  f"{g_ref.number_of_edges()} in the ground truth; {_type_diff(type_cand, type_ref)}")
-        return GraphComparison(False, False, False, detail)
+                  f"{g_ref.number_of_edges()} in the ground truth; {_type_diff(type_cand, type_ref)}; {causes.text()}")
+        return GraphComparison(False, False, False, detail, topology=causes)
     if type_cand != type_ref:
-        return GraphComparison(False, False, False, "item types differ: " + _type_diff(type_cand, type_ref))
+        causes = topology_causes(g_cand, g_ref, candidate, reference)
+        return GraphComparison(False, False, False, f"item types differ: {_type_diff(type_cand, type_ref)}; "
+                               f"{causes.text()}", topology=causes)
     if g_ref.number_of_nodes() > tol.max_nodes:
         return GraphComparison(True, None, None, f"graph too large to compare ({g_ref.number_of_nodes()} items)")
 
@@ -167,7 +172,9 @@ def compare_graphs(
     except ComparisonTimeout:
         return GraphComparison(True, False, False, f"graph comparison timed out after {tol.timeout_s:g} s")
     if mapping is None:
-        return GraphComparison(True, False, False, "topology differs (connections between items)")
+        causes = topology_causes(g_cand, g_ref, candidate, reference)
+        return GraphComparison(True, False, False, f"topology differs (connections between items); {causes.text()}",
+                               topology=causes)
     differences = _differences(g_cand, g_ref, mapping, tol)
     if not differences:
         # hash labels split values that are equal within tolerance: accept the type mapping

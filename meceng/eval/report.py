@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections import defaultdict
+from collections import Counter, defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from meceng.eval.categories import CATEGORIES
+from meceng.eval.topology import CAUSES
 
 RIGID_COLUMNS = (
     ("choose_components", "comp."),
@@ -246,6 +247,26 @@ def error_category_table(runs: list[Run]) -> list[dict[str, Any]]:
                      "proportions": {c: (counts[c] / total if total else 0.0) for c in CATEGORIES},
                      "mean_per_task": total / len(tasks) if tasks else 0.0})
     return rows
+
+
+def topology_cause_rows(groups: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
+    """Per model, its topology failures by cause (eval.topology.CAUSES); records graded before
+    causes were recorded count as ``unknown``."""
+    rows = []
+    for model, tasks in sorted(groups.items()):
+        failed = [t for t in tasks if t.get("first_failure") == "topology_match"]
+        causes = Counter((t.get("topology_causes") or {}).get("cause", "unknown") for t in failed)
+        rows.append({"model": model, "failures": len(failed), **{c: causes.get(c, 0) for c in (*CAUSES, "unknown")}})
+    return rows
+
+
+def topology_cause_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Beside Table 5: why topology failed, per model (the paper's rule fails an inert surplus
+    item too; this table shows how much of the failure that is)."""
+    groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for run in runs:
+        groups[run.model].extend(run.graded())
+    return topology_cause_rows(groups)
 
 
 def series(runs: list[Run], axis: str) -> dict[str, dict[str, Rate]]:

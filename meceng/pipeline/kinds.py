@@ -8,6 +8,7 @@ program files and the record itself are the flow's (``flow.py``), written once f
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
@@ -125,8 +126,7 @@ class AssemblyKind:
     async def grade(self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None,
                     error: str | None, *, keep: bool) -> Graded:
         chain, candidate, reference = await self.evaluator.evaluate(instance, code, selected, error, files=self.files)
-        verdict = Verdict((*self.parts_stages, *chain.stages), chain.error_categories, chain.differences,
-                          chain.solution_norm, chain.infrastructure_error)
+        verdict = dataclasses.replace(chain, stages=(*self.parts_stages, *chain.stages))
         return Graded(verdict, candidate, reference)
 
     def extend(self, record: dict[str, Any], instance: TaskInstance, graded: Graded, run_dir: Path) -> None:

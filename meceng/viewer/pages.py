@@ -65,10 +65,12 @@ def _differences(record: dict[str, Any]) -> str:
         out.append(f"<h3>{esc(category)} ({len(items)})</h3><table class='grid'><thead><tr><th>item</th><th>field</th>"
                    f"<th>program</th><th>ground truth</th></tr></thead>{rows}</table>")
     causes = record.get("topology_causes")
-    if not causes and isinstance(record.get("topology"), dict):
-        causes = record["topology"].get("causes")
     if causes:
-        out.append("<h3>topology causes</h3>" + _json(causes))
+        rows = [("cause", esc(causes.get("cause"))),
+                ("missing item types", esc(_counts(causes.get("missing")))),
+                ("surplus item types", esc(_counts(causes.get("surplus")))),
+                ("inert items (cannot affect the motion)", esc(", ".join(causes.get("inert") or []) or "none"))]
+        out.append("<h3>topology: why it differs</h3>" + _kv(rows))
     return "".join(out)
 
 
@@ -190,7 +192,7 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
     s += ["<h2>Description</h2>", f"<p class='desc'>{esc(record.get('description', ''))}</p>",
           _details("parameters", _json(record.get("params", {}))),
           "<h2 id='stages'>Stages</h2>", _stages(record)]
-    if record.get("differences"):
+    if record.get("differences") or record.get("topology_causes"):
         s += ["<h2 id='differences'>Graph differences by error category</h2>", _differences(record)]
     if "trajectory" in images:
         s += ["<h2 id='solution'>Numerical solution: program vs ground truth</h2>",
@@ -256,3 +258,7 @@ def _pairs(block: Any, form: str, strip: str = "") -> str:
         except (ValueError, TypeError):
             items.append(f"{label} {value}")
     return " · ".join(items) or "–"
+
+
+def _counts(block: Any) -> str:
+    return ", ".join(f"{n}x {t}" for t, n in (block or {}).items()) or "none"
