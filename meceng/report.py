@@ -33,6 +33,7 @@ from meceng.eval.report import (
     series,
     stage_table,
     thinking_table,
+    token_cost_table,
     topology_cause_table,
 )
 from meceng.eval.topology import CAUSES as TOPOLOGY_CAUSES
@@ -154,6 +155,18 @@ def model_facts(path: Path | None) -> dict[str, tuple[str, float | None]]:
     return {m["name"]: (str(m["release"]), m.get("size_b")) for m in data.get("models", []) if m.get("release")}
 
 
+def model_prices(path: Path | None) -> dict[str, tuple[float, float]]:
+    """model name -> (price per million prompt tokens, per million completion tokens) from a sweep
+    spec's [[models]] entries that give both."""
+    if path is None:
+        return {}
+    import tomllib
+
+    data = tomllib.loads(path.read_text())
+    return {m["name"]: (float(m["price_prompt"]), float(m["price_completion"])) for m in data.get("models", [])
+            if m.get("price_prompt") is not None and m.get("price_completion") is not None}
+
+
 def build_report(paths: list[Path], out: Path, models_file: Path | None = None) -> dict[str, Path]:
     """Write report.html, report.md, report.json and the PNGs into ``out``; returns their paths."""
     runs: list[Run] = load_runs(paths)
@@ -180,6 +193,13 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                       *[f"{r['counts'][c]} ({100 * r['proportions'][c]:.0f} %)" for c in CATEGORIES],
                       f"{r['mean_per_task']:.2f}"] for r in categories])
     sections.append(("Graph content error categories (Table 5)", md, ht, None))
+
+    tokens = token_cost_table(runs, model_prices(models_file))
+    md, ht = _table(["model", "tasks", "prompt tokens", "completion tokens", "of which reasoning", "cost"],
+                    [[r["model"], str(r["tasks"]), f"{r['prompt']:,}", f"{r['completion']:,}", f"{r['reasoning']:,}",
+                      "–" if r["cost"] is None else f"{r['cost']:,.2f}"] for r in tokens])
+    sections.append(("Tokens and cost per model (all levels; cost where the --models spec gives prices)", md, ht,
+                     None))
 
     causes = topology_cause_table(runs)
     md, ht = _table(["model", "topology failures", *TOPOLOGY_CAUSES, "not recorded"],
@@ -237,11 +257,13 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
         md, ht = _table(headers, rows)
         sections.append(("Flexible parts and assemblies, levels 3a/3b (Table 6)", md, ht, None))
         timing_rows = [[r["run"], f"{r['llm_min']:.1f}", f"{r['parts_eval_min']:.1f}", f"{r['mbs_eval_min']:.2f}",
-                        f"{r['generated_tokens_k']:.1f}",
+                        f"{r['prompt_tokens_k']:.1f}", f"{r['generated_tokens_k']:.1f}",
+                        f"{r['reasoning_tokens_k']:.1f}",
                         "–" if r["context_p95"] is None else f"{r['context_p95']:.0f}", str(r["batch_size"])]
                        for r in flexible_timing_table(runs)]
-        md, ht = _table(["run", "LLM (min)", "parts eval. (min)", "MBS eval. (min)", "gen. tokens (k)",
-                         "context used (P95)", "batch size"], timing_rows)
+        md, ht = _table(["run", "LLM (min)", "parts eval. (min)", "MBS eval. (min)", "prompt tokens (k)",
+                         "gen. tokens (k)", "of which reasoning (k)", "context used (P95)", "batch size"],
+                        timing_rows)
         sections.append(("Level 3 time and tokens (Table 7)", md, ht, None))
 
     agent_rows = []
@@ -281,6 +303,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                     **{k: r[k].to_json() for k, _ in RIGID_COLUMNS}} for r in stages],
         "error_categories": categories,
         "topology_causes": causes,
+        "tokens": tokens,
         "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
                        for r in hard],
     }

@@ -176,6 +176,7 @@ async def test_openai_api_defaults_and_reasoning_tokens(tmp_path: Path, monkeypa
         run = json.loads((await run_benchmark(settings, backend=make_backend(llm))).read_text())
     task = run["tasks"][0]
     assert task["overall"] is True and task["generation"]["meta"]["reasoning_tokens"] == 320
+    assert task["tokens"]["reasoning"] == 640 and run["summary"]["tokens"]["totals"]["reasoning"] == 640
     assert all("temperature" not in b and "seed" not in b for b in server.requests)
     assert all(h["authorization"] == "Bearer sk-openai-test" for h in server.headers)
 

@@ -52,8 +52,10 @@ async def test_report_numbers_match_run_records(tmp_path: Path) -> None:
                     await run_benchmark(settings)
 
     out = tmp_path / "report"
-    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "report", str(tmp_path / "runs"), "--out", str(out)],
-                          capture_output=True, text=True, timeout=300)
+    spec = tmp_path / "models.toml"
+    spec.write_text('[[models]]\nname = "strong:1b"\nprice_prompt = 3.0\nprice_completion = 15.0\n')
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "report", str(tmp_path / "runs"), "--out", str(out),
+                           "--models", str(spec)], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     for name in ("report.html", "report.md", "stages.png", "temperature.png", "code_templates.png", "difficulty.png"):
         assert (out / name).stat().st_size > 0
@@ -84,6 +86,14 @@ async def test_report_numbers_match_run_records(tmp_path: Path) -> None:
     assert hardest["slug"] == "double_mass_oscillator" and hardest["overall"]["passed"] == 8
     markdown = (out / "report.md").read_text()
     assert "| weak:1b T=0.7 think=False CI1/MBS3 | 4 |" in markdown
+    # tokens per model: a task is a selection (100 prompt, 50 completion) and a code answer (100, 300)
+    tokens = {r["model"]: r for r in report["tokens"]}
+    assert tokens["strong:1b"]["tasks"] == 16 and tokens["strong:1b"]["prompt"] == 3200
+    assert tokens["strong:1b"]["completion"] == 5600 and tokens["strong:1b"]["reasoning"] == 0
+    assert abs(tokens["strong:1b"]["cost"] - (3200 * 3.0 + 5600 * 15.0) / 1e6) < 1e-12
+    assert tokens["weak:1b"]["cost"] is None and "| strong:1b | 16 | 3,200 | 5,600 | 0 | 0.09 |" in markdown
+    one_run = json.loads(next((tmp_path / "runs").glob("*/run.json")).read_text())
+    assert one_run["summary"]["tokens"]["totals"] == {"prompt": 800, "completion": 1400, "reasoning": 0}
     assert "50.0 [15–85]" in markdown  # 2 of 4 with its Wilson interval
 
 

@@ -49,13 +49,15 @@ class AgentResult:
     prompt_tokens: int
     transcript: list[dict[str, Any]] = field(default_factory=list)
     infrastructure_error: str | None = None
+    reasoning_tokens: int = 0  # of completion_tokens, where the API reports them
 
     def to_json(self) -> dict[str, Any]:
         return {
             "first_code": self.first_code, "final_code": self.final_code, "error": self.error,
             "stop_reason": self.stop_reason, "rounds": self.rounds, "tool_calls": self.tool_calls,
             "completion_tokens": self.completion_tokens, "prompt_tokens": self.prompt_tokens,
-            "transcript": self.transcript, "infrastructure_error": self.infrastructure_error,
+            "reasoning_tokens": self.reasoning_tokens, "transcript": self.transcript,
+            "infrastructure_error": self.infrastructure_error,
         }
 
 
@@ -76,7 +78,7 @@ async def run_agent(
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None
     last_code: str | None = None
-    completion = prompt_tokens = 0
+    completion = prompt_tokens = reasoning = 0
     stop = "max_rounds"
     error: str | None = None
     rounds = 0
@@ -87,9 +89,11 @@ async def run_agent(
             response = await backend.chat(request)
         except LLMError as exc:
             return AgentResult(first_code, last_code, str(exc), "infrastructure", rounds, dict(toolbox.calls),
-                               completion, prompt_tokens, transcript, infrastructure_error=str(exc))
+                               completion, prompt_tokens, transcript, infrastructure_error=str(exc),
+                               reasoning_tokens=reasoning)
         completion += response.completion_tokens
         prompt_tokens += response.prompt_tokens
+        reasoning += response.reasoning_tokens
         entry: dict[str, Any] = {"role": "assistant", "content": response.content,
                                  "tool_calls": [c.to_json() for c in response.tool_calls], "meta": response.meta()}
         transcript.append(entry)
@@ -117,4 +121,4 @@ async def run_agent(
     if last_code is None and error is None:
         error = "the agent produced no program"
     return AgentResult(first_code, last_code, error, stop, rounds, dict(toolbox.calls), completion, prompt_tokens,
-                       transcript)
+                       transcript, reasoning_tokens=reasoning)

@@ -114,6 +114,10 @@ def print_summary(run_json: Path) -> None:
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
         print(f"level {level} ({block['counted']}): {line}")
+    totals = summary.get("tokens", {}).get("totals")
+    if totals:
+        print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
+              f"(of which {totals['reasoning']:,} reasoning)")
 
 
 def cmd_report(args: argparse.Namespace) -> int:

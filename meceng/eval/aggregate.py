@@ -71,6 +71,16 @@ def agent_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
     }
 
 
+def token_totals(records: Iterable[dict[str, Any]]) -> dict[str, int]:
+    """Prompt, completion and reasoning tokens of all the records' LLM calls (reasoning is part of
+    completion, as the APIs bill it)."""
+    totals = {"prompt": 0, "completion": 0, "reasoning": 0}
+    for record in records:
+        for kind in totals:
+            totals[kind] += int((record.get("tokens") or {}).get(kind, 0) or 0)
+    return totals
+
+
 def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
     """The ``summary`` block of run.json."""
     records = list(records)
@@ -96,6 +106,9 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
         "tokens": {
             "prompt": _stats([c.get("prompt_tokens", 0) for c in calls]),
             "completion": _stats([c.get("completion_tokens", 0) for c in calls]),
+            "reasoning": _stats([c.get("reasoning_tokens", 0) for c in calls]),
+            # every call of the run, agent rounds and assemblies' parts included (what a bill counts)
+            "totals": token_totals(records),
             "context_used_p95": _percentile([c.get("context_used", 0) for c in calls], 95),
             "truncated_answers": truncated,
             "context_limit_hits": sum(1 for c in calls if c.get("context_limit_hit")),

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from meceng.eval.aggregate import token_totals
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.topology import CAUSES
 
@@ -212,9 +213,27 @@ def flexible_timing_table(runs: list[Run]) -> list[dict[str, Any]]:
             "mbs_eval_min": sum(t.get("timing", {}).get("mbs_evaluation_s", 0.0) for t in tasks
                                 if t.get("level") == "3b") / 60,
             "generated_tokens_k": sum(t.get("tokens", {}).get("completion", 0) for t in tasks) / 1000,
+            "prompt_tokens_k": sum(t.get("tokens", {}).get("prompt", 0) for t in tasks) / 1000,
+            "reasoning_tokens_k": sum(t.get("tokens", {}).get("reasoning", 0) for t in tasks) / 1000,
             "context_p95": float(np.percentile(contexts, 95)) if contexts else None,
             "batch_size": run.settings["llm"].get("batch_size"),
         })
+    return rows
+
+
+def token_cost_table(runs: list[Run], prices: dict[str, tuple[float, float]] | None = None) -> list[dict[str, Any]]:
+    """Per model, over all its runs and levels: prompt, completion and reasoning tokens (reasoning
+    is part of completion, as the APIs bill it) and, with prices per million prompt and completion
+    tokens, the cost. Infrastructure failures count too: their calls were made."""
+    groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for run in runs:
+        groups[run.model].extend(run.tasks)
+    rows = []
+    for model, tasks in sorted(groups.items()):
+        totals = token_totals(tasks)
+        price = (prices or {}).get(model)
+        cost = None if price is None else (totals["prompt"] * price[0] + totals["completion"] * price[1]) / 1e6
+        rows.append({"model": model, "tasks": len(tasks), **totals, "cost": cost})
     return rows
 
 

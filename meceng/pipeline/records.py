@@ -31,7 +31,8 @@ def _instance_fields(instance: TaskInstance) -> dict[str, Any]:
 
 def _tokens(*metas: dict[str, Any]) -> dict[str, int]:
     return {"prompt": sum(m.get("prompt_tokens", 0) for m in metas),
-            "completion": sum(m.get("completion_tokens", 0) for m in metas)}
+            "completion": sum(m.get("completion_tokens", 0) for m in metas),
+            "reasoning": sum(m.get("reasoning_tokens", 0) for m in metas)}
 
 
 def task_record(
@@ -88,7 +89,7 @@ def not_started_record(instance: TaskInstance, verdict: Verdict, part_keys: dict
         **_instance_fields(instance), **verdict.to_json(),
         "parts": part_keys, "timing": {"llm_s": 0.0, "evaluation_s": 0.0, "total_s": timing["parts_wall_s"],
                                        **timing},
-        "tokens": {"prompt": 0, "completion": 0}, "evaluator": EVALUATOR_VERSION,
+        "tokens": {"prompt": 0, "completion": 0, "reasoning": 0}, "evaluator": EVALUATOR_VERSION,
     }
 
 
@@ -112,4 +113,5 @@ def agent_generation(agent: AgentResult) -> Generation:
     return Generation(prompt=agent.transcript[0]["content"], answer=agent.transcript[-1].get("content", ""),
                       code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
                       meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
+                            "reasoning_tokens": agent.reasoning_tokens,
                             "context_used": agent.prompt_tokens + agent.completion_tokens})
