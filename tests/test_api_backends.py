@@ -247,3 +247,14 @@ async def test_cli_level3_runs_on_both_apis(tmp_path: Path) -> None:
         levels = run["summary"]["levels"]
         assert levels["3a"]["rates"]["overall"] == 1.0 and levels["3b"]["rates"]["overall"] == 1.0, output
         assert_no_key_in(tmp_path / name, output)
+
+
+def test_cli_without_key_says_so_and_writes_nothing(tmp_path: Path) -> None:
+    import subprocess
+
+    env = {k: v for k, v in os.environ.items() if k not in ("ANTHROPIC_API_KEY", "OPENAI_API_KEY")}
+    proc = subprocess.run([sys.executable, "-m", "meceng", "run", "--backend", "anthropic", "--model", "claude-x",
+                           "--only", "3", "--variations", "1", "--out", str(tmp_path / "runs"), "--no-progress"],
+                          capture_output=True, text=True, timeout=120, env=env)
+    assert proc.returncode == 2 and "ANTHROPIC_API_KEY" in proc.stderr
+    assert not (tmp_path / "runs").exists()

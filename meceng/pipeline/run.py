@@ -56,6 +56,8 @@ async def run_benchmark(
     if settings.executor not in ("fork", "subprocess"):
         raise ValueError(f"unknown executor {settings.executor!r} (fork or subprocess)")
     instances = registry.instances(models, settings.seed, settings.variations)
+    own_backend = backend is None
+    backend = backend or make_backend(settings.llm)  # a missing API key stops here, before any file is written
     started = time.time()
     stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
     run_dir = settings.out / (settings.run_name or f"{stamp}_{safe_name(settings.llm.model)}")
@@ -70,9 +72,8 @@ async def run_benchmark(
     writer.finished = []
     done_keys = {k for k, r in kept.items() if not r.get("origin")}
     todo = [i for i in instances if i.key not in done_keys]
-    own_backend = backend is None
     cache = ResponseCache(run_dir / "responses.jsonl")
-    backend = CachedBackend(backend or make_backend(settings.llm), cache, settings.llm)
+    backend = CachedBackend(backend, cache, settings.llm)
     pool = WarmPool(child_env()) if settings.executor == "fork" else None
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
                           Tolerances(solution=settings.solution_tolerance), pool=pool,
