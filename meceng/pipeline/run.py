@@ -106,9 +106,7 @@ async def run_benchmark(
                      first_failure=record["first_failure"])
             advance(record["overall"], sum(int(r.get("tokens", {}).get("completion", 0)) for r in produced))
 
-        try:
-            await asyncio.gather(*(one(i) for i in todo))
-        finally:
+        async def close_services() -> None:
             if pool is not None:
                 await asyncio.gather(pool_start, return_exceptions=True)
                 await pool.close()
@@ -116,12 +114,24 @@ async def run_benchmark(
                 await backend.aclose()
             else:
                 cache.close()
+
+        try:
+            await asyncio.gather(*(one(i) for i in todo))
+        except BaseException:
+            await close_services()
+            raise
+    # the fork server and the HTTP sessions wind down while run.json is written
+    closing = asyncio.ensure_future(close_services())
     order = {inst.key: k for k, inst in enumerate(instances)}
     # a part drawn for an assembly sits just before its assembly
     records.sort(key=lambda r: (order.get(r.get("origin") or record_key(r), 0), 0 if r.get("origin") else 1))
     extra = {"llm_calls": {"answered_from_cache": cache.hits, "requested": cache.misses},
              "resumed_tasks": len(kept)}
-    path = writer.finish(settings.to_json(), records, started, time.perf_counter() - t0, extra)
+    try:
+        path = await asyncio.to_thread(writer.finish, settings.to_json(), records, started,
+                                       time.perf_counter() - t0, extra)
+    finally:
+        await closing
     log.info("run finished", run_json=str(path))
     logging.getLogger("meceng").removeHandler(log_handler)
     log_handler.close()
