@@ -1,8 +1,13 @@
-"""Sweeps: a grid of runs from a TOML spec, flags overriding it.
+"""Sweeps: the paper's studies as run folders, from a TOML spec, flags overriding it.
 
-The grid is models x temperatures x thinking x selection prompt x code prompt; each point is one
-run folder named from its settings. A point whose run.json exists is skipped, a point whose
-folder holds an unfinished journal is resumed, so rerunning a sweep only does missing work.
+A spec names its models once (``[[models]]``) and its studies (``[[studies]]``), each a grid of
+its own: models x temperatures x thinking x selection prompt x code prompt, on its own levels,
+variations and seed. The paper varies one factor at a time (section 4: the main table at
+temperature 0 without thinking, then temperature, thinking, prompt variants CI1-CI6 and
+MBS1-MBS4, level 3), so studies share grid points; each point is one run folder named from
+everything that defines it, and a point two studies share runs once. A point whose run.json
+exists is skipped, one whose folder holds an unfinished journal is resumed, so rerunning a sweep
+only does missing work. A spec without ``[[studies]]`` is one study of its ``[grid]``.
 
 Token limits follow the paper (section 2.3): context 4096 and answer 2048 tokens, times 1.5 for
 models that reason even with thinking off, times 3.75 with thinking on; level 3 (parts and
@@ -16,6 +21,7 @@ import itertools
 import re
 import tomllib
 from dataclasses import dataclass, field, replace
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -23,29 +29,46 @@ import httpx
 
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
+from meceng.tasks import default_registry
 
 BASE_CTX = 4096
 BASE_PREDICT = 2048
 FLEXIBLE_CTX = 6144
 REASONING_FACTOR = 1.5
 THINKING_FACTOR = 3.75
+DEFAULT_HOST = "http://127.0.0.1:11434"
+REQUESTS_PER_TASK = 2  # the paper's pipeline: select components, then write the program
 
 
 @dataclass(frozen=True)
 class ModelSpec:
+    """A model as a sweep runs it. ``think_off``/``think_on`` are what the grid's thinking axis
+    means for this model (gpt-oss: reasoning "low" and "medium", paper Table 3);
+    ``api_defaults`` sends neither temperature nor seed (the hosted models "with default API
+    settings"); prices are USD per million tokens, for the report's cost column."""
+
     name: str
     backend: str = "ollama"
-    hosts: tuple[str, ...] = ("http://127.0.0.1:11434",)
+    hosts: tuple[str, ...] = (DEFAULT_HOST,)
     batch_size: int = 4
     reasons_anyway: bool = False
     release: str | None = None
     size_b: float | None = None
+    think_off: bool | str = False
+    think_on: bool | str = True
+    api_defaults: bool = False
+    api_key_env: str | None = None
+    price_prompt: float | None = None
+    price_completion: float | None = None
 
 
 @dataclass(frozen=True)
-class SweepSpec:
+class Study:
+    """One factor of the paper's design: its models and grid, levels, variations and seed."""
+
+    name: str
     models: tuple[ModelSpec, ...]
-    temperatures: tuple[float, ...] = (0.0,)
+    temperatures: tuple[float | None, ...] = (0.0,)  # None: the model's default temperature
     thinks: tuple[bool | str, ...] = (False,)
     select_templates: tuple[str, ...] = (DEFAULT_SELECT,)
     code_templates: tuple[str, ...] = (DEFAULT_CODE,)
@@ -53,37 +76,67 @@ class SweepSpec:
     only: tuple[str, ...] = ()
     variations: int = 20
     seed: int = 0
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    studies: tuple[Study, ...]
     out: Path = Path("runs")
     workers: int | None = None
     exec_timeout_s: float = 60.0
+    description: str = ""
     extra: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def models(self) -> tuple[ModelSpec, ...]:
+        seen: dict[str, ModelSpec] = {}
+        for study in self.studies:
+            for model in study.models:
+                seen.setdefault(model.name, model)
+        return tuple(seen.values())
 
 
 @dataclass(frozen=True)
 class GridPoint:
+    """One run: everything that defines it, so that its folder name says it all."""
+
     model: ModelSpec
-    temperature: float
+    temperature: float | None
     think: bool | str
     select_template: str
     code_template: str
+    levels: tuple[str, ...] = ("1", "2")
+    only: tuple[str, ...] = ()
+    variations: int = 20
+    seed: int = 0
 
-    def token_limits(self, levels: tuple[str, ...] = ("1", "2")) -> tuple[int, int]:
+    @property
+    def default_sampling(self) -> bool:
+        return self.model.api_defaults or self.temperature is None
+
+    def token_limits(self) -> tuple[int, int]:
         factor = THINKING_FACTOR if self.think not in (False, None) else (
             REASONING_FACTOR if self.model.reasons_anyway else 1.0)
-        base = FLEXIBLE_CTX if any(level in ("3a", "3b") for level in levels) else BASE_CTX
+        base = FLEXIBLE_CTX if any(level in ("3a", "3b") for level in self.levels) else BASE_CTX
         return int(base * factor), int(BASE_PREDICT * factor)
 
-    def llm(self, llm_timeout_s: float = 600.0, levels: tuple[str, ...] = ("1", "2")) -> LLMSettings:
-        num_ctx, num_predict = self.token_limits(levels)
+    def llm(self, llm_timeout_s: float = 600.0) -> LLMSettings:
+        num_ctx, num_predict = self.token_limits()
         backend = "gold" if self.model.name == "gold" else self.model.backend
         return LLMSettings(model=self.model.name, backend=backend, hosts=self.model.hosts,
-                           temperature=self.temperature, think=self.think, num_ctx=num_ctx,
-                           num_predict=num_predict, batch_size=self.model.batch_size, timeout_s=llm_timeout_s)
+                           temperature=0.0 if self.temperature is None else self.temperature,
+                           think=self.think, num_ctx=num_ctx, num_predict=num_predict,
+                           batch_size=self.model.batch_size, timeout_s=llm_timeout_s,
+                           api_defaults=self.default_sampling, api_key_env=self.model.api_key_env)
 
-    def name(self, spec: SweepSpec) -> str:
-        levels = "-".join(spec.levels)
-        text = (f"{self.model.name}_T{self.temperature:g}_think-{self.think}_{self.select_template}_"
-                f"{self.code_template}_L{levels}_v{spec.variations}_s{spec.seed}")
+    @property
+    def name(self) -> str:
+        temperature = "default" if self.default_sampling else f"{self.temperature:g}"
+        text = (f"{self.model.name}_T{temperature}_think-{self.think}_{self.select_template}_"
+                f"{self.code_template}_L{'-'.join(self.levels)}_v{self.variations}_s{self.seed}")
+        if self.only:
+            text += "_only-" + "-".join(self.only)
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
 
 
@@ -93,62 +146,155 @@ def _tuple(value: Any) -> tuple[Any, ...]:
     return tuple(value) if isinstance(value, list | tuple) else (value,)
 
 
-def load_spec(path: Path) -> SweepSpec:
-    """Read a sweep spec; unknown keys are an error (a typo must not silently change a study)."""
-    data = tomllib.loads(path.read_text())
-    known = {"models", "grid", "levels", "only", "variations", "seed", "out", "workers", "exec_timeout_s",
-             "description"}
+def _temperature(value: Any) -> float | None:
+    if value == "default":
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise ValueError(f"temperature {value!r}: a number or \"default\"")
+    return float(value)
+
+
+def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
     unknown = set(data) - known
     if unknown:
-        raise ValueError(f"{path}: unknown keys {sorted(unknown)}")
-    models = []
-    for entry in data.get("models", []):
-        entry = dict(entry)
-        entry["hosts"] = tuple(entry.get("hosts", ("http://127.0.0.1:11434",)))
-        models.append(ModelSpec(**entry))
-    grid = data.get("grid", {})
-    return SweepSpec(
-        models=tuple(models),
-        temperatures=tuple(float(t) for t in _tuple(grid.get("temperature", [0.0]))),
+        raise ValueError(f"{where}: unknown keys {sorted(unknown)}")
+
+
+SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description"}
+GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
+MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
+
+
+def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tuple[ModelSpec, ...]) -> Study:
+    grid = {**defaults.get("grid", {}), **data.get("grid", {})}
+    _check_keys(f"study {name} grid", grid, GRID_KEYS)
+    merged = {**defaults, **data}
+    return Study(
+        name=name, models=models,
+        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [0.0]))),
         thinks=_tuple(grid.get("think", [False])),
-        select_templates=_tuple(grid.get("select_template", [DEFAULT_SELECT])),
-        code_templates=_tuple(grid.get("code_template", [DEFAULT_CODE])),
-        levels=tuple(str(x) for x in _tuple(data.get("levels", ["1", "2"]))),
-        only=tuple(str(x) for x in _tuple(data.get("only", []))),
-        variations=int(data.get("variations", 20)),
-        seed=int(data.get("seed", 0)),
-        out=Path(data.get("out", "runs")),
-        workers=data.get("workers"),
-        exec_timeout_s=float(data.get("exec_timeout_s", 60.0)),
+        select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
+        code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
+        levels=tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"]))),
+        only=tuple(str(x) for x in _tuple(merged.get("only", []))),
+        variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
+        description=str(data.get("description", "")),
     )
 
 
-def grid_points(spec: SweepSpec) -> list[GridPoint]:
-    return [GridPoint(*p) for p in itertools.product(spec.models, spec.temperatures, spec.thinks,
-                                                          spec.select_templates, spec.code_templates)]
+def load_spec(path: Path) -> SweepSpec:
+    """Read a sweep spec; unknown keys are an error (a typo must not silently change a study)."""
+    data = tomllib.loads(path.read_text())
+    _check_keys(str(path), data, SCOPE_KEYS | {"models", "studies", "out", "workers", "exec_timeout_s"})
+    catalogue: dict[str, ModelSpec] = {}
+    for entry in data.get("models", []):
+        _check_keys(f"{path}: model {entry.get('name')}", entry, MODEL_KEYS)
+        entry = dict(entry)
+        entry["hosts"] = tuple(entry.get("hosts", (DEFAULT_HOST,)))
+        catalogue[entry["name"]] = ModelSpec(**entry)
+    defaults = {k: v for k, v in data.items() if k in SCOPE_KEYS - {"description"}}
+    studies = []
+    for entry in data.get("studies", []):
+        name = str(entry.get("name", ""))
+        if not name:
+            raise ValueError(f"{path}: a study without a name")
+        _check_keys(f"{path}: study {name}", entry, SCOPE_KEYS | {"name", "models"})
+        missing = [m for m in _tuple(entry.get("models")) if m not in catalogue]
+        if missing:
+            raise ValueError(f"{path}: study {name} names models not in [[models]]: {missing}")
+        chosen = tuple(catalogue[m] for m in _tuple(entry.get("models"))) or tuple(catalogue.values())
+        studies.append(_study(name, entry, defaults, chosen))
+    if not studies:
+        studies.append(_study("sweep", {}, defaults, tuple(catalogue.values())))
+    if len({s.name for s in studies}) != len(studies):
+        raise ValueError(f"{path}: two studies share a name")
+    return SweepSpec(studies=tuple(studies), out=Path(data.get("out", "runs")), workers=data.get("workers"),
+                     exec_timeout_s=float(data.get("exec_timeout_s", 60.0)),
+                     description=str(data.get("description", "")))
 
 
-async def _answers(host: str, path: str, timeout_s: float = 3.0) -> bool:
+def _think(model: ModelSpec, think: bool | str) -> bool | str:
+    if think is True:
+        return model.think_on
+    if think is False:
+        return model.think_off
+    return think  # an explicit level ("low", "high") is taken as given
+
+
+def study_points(study: Study) -> list[GridPoint]:
+    """The study's runs; points that coincide (a hosted model at several temperatures it never
+    receives) are one."""
+    points = {}
+    for model, temperature, think, select, code in itertools.product(
+            study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates):
+        point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
+                          study.variations, study.seed)
+        points.setdefault(point.name, point)
+    return list(points.values())
+
+
+@dataclass(frozen=True)
+class PlannedRun:
+    study: str
+    point: GridPoint
+    shared_with: str | None  # the earlier study that already runs this point
+
+
+def plan(spec: SweepSpec) -> list[PlannedRun]:
+    """Every study's runs in spec order; a point an earlier study holds is marked shared."""
+    owner: dict[str, str] = {}
+    planned = []
+    for study in spec.studies:
+        for point in study_points(study):
+            planned.append(PlannedRun(study.name, point, owner.get(point.name)))
+            owner.setdefault(point.name, study.name)
+    return planned
+
+
+def unique_points(planned: list[PlannedRun]) -> list[GridPoint]:
+    return [run.point for run in planned if run.shared_with is None]
+
+
+@cache
+def workload(levels: tuple[str, ...], only: tuple[str, ...], variations: int, seed: int) -> tuple[int, int]:
+    """(task records, LLM requests at most) of one pipeline run: an assembly counts its distinct
+    parts too, and its own two requests are made only when every part passed."""
+    registry = default_registry()
+    models = registry.select(levels, only or None)
+    records = 0
+    for instance in registry.instances(models, seed, variations):
+        records += 1 + len({part.key for _, part in instance.parts}) if instance.kind == "assembly" else 1
+    return records, records * REQUESTS_PER_TASK
+
+
+def point_workload(point: GridPoint) -> tuple[int, int]:
+    return workload(point.levels, point.only, point.variations, point.seed)
+
+
+async def _answers(host: str, path: str, ok: tuple[int, ...], timeout_s: float = 3.0) -> bool:
     try:
         async with httpx.AsyncClient(timeout=timeout_s) as client:
             response = await client.get(host.rstrip("/") + path)
-            return response.status_code == 200
+            return response.status_code in ok
     except httpx.HTTPError:
         return False
 
 
 def unreachable_hosts(points: list[GridPoint]) -> list[str]:
-    """Hosts of Ollama grid points that do not answer ``/api/version``."""
+    """Ollama hosts that do not answer ``/api/version`` and OpenAI-compatible servers that do not
+    answer ``/models`` (401/403 count as up: the key is checked when the run starts). Hosted
+    APIs are not probed."""
     hosts = sorted({h for p in points if p.llm().backend == "ollama" for h in p.model.hosts})
-    openai_hosts = sorted({h for p in points if p.llm().backend == "openai" for h in p.model.hosts})
+    openai_hosts = sorted({h for p in points if p.llm().backend == "openai" for h in p.model.hosts
+                           if "api.openai.com" not in h})
 
     async def probe() -> list[str]:
-        results = await asyncio.gather(*(_answers(h, "/api/version") for h in hosts),
-                                       *(_answers(h, "/models") for h in openai_hosts))
+        results = await asyncio.gather(*(_answers(h, "/api/version", (200,)) for h in hosts),
+                                       *(_answers(h, "/models", (200, 401, 403)) for h in openai_hosts))
         return [h for h, ok in zip(hosts + openai_hosts, results, strict=True) if not ok]
 
     return asyncio.run(probe()) if hosts or openai_hosts else []
 
 
-def with_overrides(spec: SweepSpec, **changes: Any) -> SweepSpec:
-    return replace(spec, **{k: v for k, v in changes.items() if v is not None})
+def with_overrides(study: Study, **changes: Any) -> Study:
+    return replace(study, **{k: v for k, v in changes.items() if v is not None})

@@ -1,14 +1,16 @@
 #!/usr/bin/env python
-"""Sweep the benchmark over a grid: models x temperatures x thinking x prompt templates.
+"""Run the benchmark's studies: one run folder per grid point of each study in a TOML spec.
 
     python scripts/sweep.py                                   # runs sweeps/default.toml
     python scripts/sweep.py --model gold                      # harness self-check, offline
-    python scripts/sweep.py --spec sweeps/paper.toml --variations 5
-    python scripts/sweep.py --model gemma4:31b --model qwen3.5:27b --temperature 0 --temperature 0.7
+    python scripts/sweep.py --spec sweeps/paper.toml --dry-run             # the paper's design, counted
+    python scripts/sweep.py --spec sweeps/paper.toml --study temperature   # one study of it
+    python scripts/sweep.py --model gemma4:31b --temperature 0 --temperature 0.7
 
-Flags override the spec; --model, --temperature, --think, --select-template and --code-template
-may be repeated and replace that axis of the grid. One run folder per grid point under --out,
-named from its settings: a finished point is skipped, an interrupted one resumed.
+Flags override every chosen study; --model, --temperature, --think, --select-template and
+--code-template may be repeated and replace that axis of the grid. A grid point two studies
+share runs once. Run folders under --out are named from their settings: a finished point is
+skipped, an interrupted one resumed.
 """
 
 from __future__ import annotations
@@ -16,27 +18,58 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import os
 import sys
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
+from rich.console import Console
+from rich.table import Table
+
+from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings, run_benchmark
-from meceng.sweep import ModelSpec, grid_points, load_spec, unreachable_hosts, with_overrides
+from meceng.sweep import (
+    GridPoint,
+    ModelSpec,
+    PlannedRun,
+    SweepSpec,
+    load_spec,
+    plan,
+    point_workload,
+    unique_points,
+    unreachable_hosts,
+    with_overrides,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_SPEC = ROOT / "sweeps" / "default.toml"
 
 
+def parse_temperature(text: str) -> float | None:
+    if text == "default":
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError("temperature must be a number or 'default'") from None
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--spec", type=Path, default=None, help=f"TOML sweep spec (default {DEFAULT_SPEC.name})")
+    p.add_argument("--study", action="append", help="run only this study of the spec; repeatable")
+    p.add_argument("--dry-run", action="store_true",
+                   help="print the planned runs, tasks and LLM requests per study; start nothing")
     p.add_argument("--model", action="append", help="model name; repeat for several (gold = ground truth)")
-    p.add_argument("--backend", choices=("ollama", "openai", "gold"), default=None)
+    p.add_argument("--backend", choices=tuple(DEFAULT_HOSTS), default=None)
     p.add_argument("--host", "--base-url", action="append", dest="host",
                    help="server URL (Ollama, or an OpenAI-compatible .../v1); repeat for several")
-    p.add_argument("--temperature", action="append", type=float)
+    p.add_argument("--api-defaults", action="store_true", help="send neither temperature nor seed (with --model)")
+    p.add_argument("--temperature", action="append", type=parse_temperature,
+                   help="a number, or 'default' for the model's own; repeatable")
     p.add_argument("--think", action="append", type=parse_think)
     p.add_argument("--select-template", action="append")
     p.add_argument("--code-template", action="append")
@@ -54,35 +87,109 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
+    studies = spec.studies
+    if args.study:
+        unknown = sorted(set(args.study) - {s.name for s in studies})
+        if unknown:
+            raise ValueError(f"no study {', '.join(unknown)} in the spec (it has {', '.join(s.name for s in studies)})")
+        studies = tuple(s for s in studies if s.name in args.study)
+    models: tuple[ModelSpec, ...] | None = None
+    if args.model:
+        backend = args.backend or "ollama"
+        hosts = tuple(args.host) if args.host else (DEFAULT_HOSTS[backend],)
+        models = tuple(ModelSpec(name=m, backend="gold" if m == "gold" else backend, hosts=hosts,
+                                 batch_size=args.batch_size or 4,
+                                 api_defaults=args.api_defaults or backend == "anthropic") for m in args.model)
+    only = tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()) if args.only else None
+    changed = []
+    for study in studies:
+        study_models = models
+        if study_models is None and (args.host or args.batch_size):
+            study_models = tuple(replace(m, hosts=tuple(args.host) if args.host else m.hosts,
+                                         batch_size=args.batch_size or m.batch_size) for m in study.models)
+        changed.append(with_overrides(
+            study, models=study_models, temperatures=tuple(args.temperature) if args.temperature else None,
+            thinks=tuple(args.think) if args.think else None,
+            select_templates=tuple(args.select_template) if args.select_template else None,
+            code_templates=tuple(args.code_template) if args.code_template else None,
+            levels=args.levels, variations=args.variations, seed=args.seed, only=only))
+    return replace(spec, studies=tuple(changed), out=args.out or spec.out, workers=args.workers or spec.workers,
+                   exec_timeout_s=args.timeout or spec.exec_timeout_s)
+
+
+def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> None:
+    runs = Table(title=f"Planned runs under {spec.out}", title_justify="left")
+    for column in ("study", "run folder", "tasks", "LLM requests", "state"):
+        runs.add_column(column, justify="right" if column in ("tasks", "LLM requests") else "left")
+    for item in planned:
+        tasks, requests = point_workload(item.point)
+        if item.shared_with:
+            state = f"shared with {item.shared_with}"
+        elif (spec.out / item.point.name / "run.json").exists():
+            state = "finished"
+        else:
+            state = "resume" if (spec.out / item.point.name / "journal.jsonl").exists() else "planned"
+        runs.add_row(item.study, item.point.name, f"{tasks:,}", f"{requests:,}", state)
+    console.print(runs)
+    summary = Table(title=spec.description or "Studies", title_justify="left")
+    for column in ("study", "models", "runs", "of them new", "tasks (new runs)", "LLM requests (new runs)"):
+        summary.add_column(column, justify="left" if column == "study" else "right")
+    for study in dict.fromkeys(item.study for item in planned):
+        items = [i for i in planned if i.study == study]
+        new = [i for i in items if i.shared_with is None]
+        summary.add_row(study, str(len({i.point.model.name for i in items})), str(len(items)), str(len(new)),
+                        f"{sum(point_workload(i.point)[0] for i in new):,}",
+                        f"{sum(point_workload(i.point)[1] for i in new):,}")
+    points = unique_points(planned)
+    summary.add_section()
+    summary.add_row("total (each run once)", str(len({p.model.name for p in points})), str(len(planned)),
+                    str(len(points)), f"{sum(point_workload(p)[0] for p in points):,}",
+                    f"{sum(point_workload(p)[1] for p in points):,}")
+    console.print(summary)
+    console.print("LLM requests are an upper bound: two per task (selection, program); an assembly's own "
+                  "two only when all its parts pass.")
+
+
+def run_point(point: GridPoint, spec: SweepSpec, args: argparse.Namespace) -> dict[str, Any]:
+    name = args.name or point.name
+    run_dir = spec.out / name
+    if (run_dir / "run.json").exists():
+        print(f"{name}: finished earlier, skipped")
+        return {"run": str(run_dir / "run.json"), "skipped": True}
+    settings = RunSettings(
+        llm=point.llm(), levels=point.levels, only=point.only, variations=point.variations, seed=point.seed,
+        out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
+        exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
+        code_template=point.code_template, progress=not args.no_progress,
+        resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
+    )
+    try:
+        path = asyncio.run(run_benchmark(settings))
+    except Exception as exc:  # one grid point never ends the sweep
+        print(f"{name}: failed: {exc}", file=sys.stderr)
+        return {"run": str(run_dir), "error": str(exc)}
+    print_summary(path)
+    summary = json.loads(path.read_text())["summary"]
+    return {"run": str(path), "overall": summary["rates"]["overall"]}
+
+
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     spec_path = args.spec or DEFAULT_SPEC
     try:
-        spec = load_spec(spec_path)
+        spec = apply_flags(load_spec(spec_path), args)
     except (OSError, ValueError) as exc:
-        print(f"error: cannot read sweep spec {spec_path}: {exc}", file=sys.stderr)
+        print(f"error: sweep spec {spec_path}: {exc}", file=sys.stderr)
         return 2
-    if args.model:
-        hosts = tuple(args.host) if args.host else ("http://127.0.0.1:11434",)
-        spec = replace(spec, models=tuple(
-            ModelSpec(name=m, backend="gold" if m == "gold" else (args.backend or "ollama"), hosts=hosts,
-                      batch_size=args.batch_size or 4) for m in args.model))
-    elif args.host or args.batch_size:
-        spec = replace(spec, models=tuple(replace(m, hosts=tuple(args.host) if args.host else m.hosts,
-                                                  batch_size=args.batch_size or m.batch_size) for m in spec.models))
-    spec = with_overrides(
-        spec, temperatures=tuple(args.temperature) if args.temperature else None,
-        thinks=tuple(args.think) if args.think else None,
-        select_templates=tuple(args.select_template) if args.select_template else None,
-        code_templates=tuple(args.code_template) if args.code_template else None,
-        levels=args.levels, variations=args.variations, seed=args.seed, out=args.out, workers=args.workers,
-        exec_timeout_s=args.timeout,
-        only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()) if args.only else None,
-    )
-    points = grid_points(spec)
+    planned = plan(spec)
+    points = unique_points(planned)
     if not points:
         print("error: the sweep has no grid point (no models?)", file=sys.stderr)
         return 2
+    if args.dry_run:
+        print_plan(spec, planned, Console(width=160))
+        return 0
     if args.name and len(points) > 1:
         print("error: --name needs a single grid point", file=sys.stderr)
         return 2
@@ -92,33 +199,7 @@ def main(argv: list[str] | None = None) -> int:
               "offline with: python scripts/sweep.py --model gold", file=sys.stderr)
         return 3
     configure_logging(None)
-    results = []
-    for point in points:
-        name = args.name or point.name(spec)
-        run_dir = spec.out / name
-        if (run_dir / "run.json").exists():
-            print(f"{name}: finished earlier, skipped")
-            results.append({"run": str(run_dir / "run.json"), "skipped": True})
-            continue
-        import os
-
-        settings = RunSettings(
-            llm=point.llm(levels=spec.levels), levels=spec.levels, only=spec.only, variations=spec.variations,
-            seed=spec.seed,
-            out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
-            exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
-            code_template=point.code_template, progress=not args.no_progress,
-            resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
-        )
-        try:
-            path = asyncio.run(run_benchmark(settings))
-        except Exception as exc:  # one grid point never ends the sweep
-            print(f"{name}: failed: {exc}", file=sys.stderr)
-            results.append({"run": str(run_dir), "error": str(exc)})
-            continue
-        print_summary(path)
-        summary = json.loads(path.read_text())["summary"]
-        results.append({"run": str(path), "overall": summary["rates"]["overall"]})
+    results = [run_point(point, spec, args) for point in points]
     print(json.dumps(results, indent=1))
     return 1 if any("error" in r for r in results) else 0
 

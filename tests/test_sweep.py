@@ -5,9 +5,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-from meceng.sweep import GridPoint, ModelSpec, SweepSpec, grid_points, load_spec
+import pytest
+
+from meceng.agents.llm import LLMSettings
+from meceng.sweep import GridPoint, ModelSpec, load_spec, plan, point_workload, study_points, unique_points
 
 ROOT = Path(__file__).resolve().parents[1]
+PAPER = ROOT / "sweeps" / "paper.toml"
 
 
 def sweep(*args: str) -> subprocess.CompletedProcess[str]:
@@ -34,18 +38,89 @@ def test_rerun_of_a_finished_sweep_does_no_work(tmp_path: Path) -> None:
     assert json.loads(second.stdout[second.stdout.index("["):])[0]["skipped"] is True
 
 
-def test_specs_load_and_token_limits_follow_the_paper() -> None:
-    for path in (ROOT / "sweeps").glob("*.toml"):
-        assert load_spec(path).models
-    paper = load_spec(ROOT / "sweeps" / "paper.toml")
-    assert len(grid_points(paper)) == len(paper.models) * 3 * 2 * 6 * 4
+def test_token_limits_follow_the_paper() -> None:
     plain = GridPoint(ModelSpec("a"), 0.0, False, "CI1", "MBS1")
     reasoning = GridPoint(ModelSpec("b", reasons_anyway=True), 0.0, False, "CI1", "MBS1")
     thinking = GridPoint(ModelSpec("c"), 0.0, True, "CI1", "MBS1")
     assert plain.token_limits() == (4096, 2048)
     assert reasoning.token_limits() == (6144, 3072)
     assert thinking.token_limits() == (15360, 7680)
-    assert plain.token_limits(("3a", "3b")) == (6144, 2048)
-    assert plain.llm(levels=("3b",)).num_ctx == 6144
-    spec = SweepSpec(models=(ModelSpec("m:1b"),), variations=3)
-    assert plain.name(spec) != thinking.name(spec)
+    flexible = GridPoint(ModelSpec("a"), 0.0, False, "CI1", "MBS1", levels=("3a", "3b"))
+    assert flexible.token_limits() == (6144, 2048) and flexible.llm().num_ctx == 6144
+    assert plain.name != thinking.name
+
+
+def test_paper_spec_is_the_papers_design() -> None:
+    spec = load_spec(PAPER)
+    studies = {s.name: s for s in spec.studies}
+    assert list(studies) == ["main", "temperature", "temperature-thinking", "thinking", "ci", "mbs", "level3"]
+    assert len(studies["main"].models) == 34  # 32 open-weight and two hosted models (Table 12)
+    assert studies["main"].temperatures == (0.0,) and studies["main"].thinks == (False,)
+    assert len(studies["temperature"].temperatures) == 13  # 0, 0.05, 0.1 ... 1.0 and the default
+    assert len(studies["ci"].select_templates) == 6 and len(studies["mbs"].code_templates) == 4
+    hosted = {p.model.name: p for p in study_points(studies["main"]) if p.model.backend != "ollama"}
+    assert {p.model.backend for p in hosted.values()} == {"anthropic", "openai"}
+    assert all(p.llm().api_defaults and "_Tdefault_" in p.name for p in hosted.values())
+    think = {p.model.name: p.think for p in study_points(studies["thinking"])}
+    assert think["gpt-oss:20b"] == "medium" and think["gemma4:31b"] is True
+    assert {p.think for p in study_points(studies["main"]) if p.model.name.startswith("gpt-oss")} == {"low"}
+    # level 3: 12 flexible MBSs x 20 = 240 assemblies needing 440 parts (section 4.2)
+    (level3,) = {point_workload(p) for p in study_points(studies["level3"])}
+    assert level3 == (240 + 440, 2 * (240 + 440))
+
+
+def test_shared_grid_points_run_once() -> None:
+    planned = plan(load_spec(PAPER))
+    names = [run.point.name for run in planned]
+    points = unique_points(planned)
+    assert len(points) == len(set(names)) < len(names)
+    shared = [run for run in planned if run.point.name == "gemma4-31b_T0_think-False_CI1_MBS1_L1-2_v20_s0"]
+    assert [(r.study, r.shared_with) for r in shared] == [
+        ("main", None), ("temperature", "main"), ("ci", "main"), ("mbs", "main")]
+
+
+def test_spec_errors_are_named(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[[models]]\nname = "a"\n[[studies]]\nname = "s"\nmodels = ["b"]\n')
+    with pytest.raises(ValueError, match="not in"):
+        load_spec(bad)
+    bad.write_text('[[models]]\nname = "a"\n[[studies]]\nname = "s"\ngird.temperature = [0]\n')
+    with pytest.raises(ValueError, match="gird"):
+        load_spec(bad)
+    bad.write_text('[[models]]\nname = "a"\nprice = 3\n')
+    with pytest.raises(ValueError, match="price"):
+        load_spec(bad)
+
+
+def test_default_sampling_sends_no_temperature_or_seed() -> None:
+    assert LLMSettings(temperature=0.3, seed=7).options()["temperature"] == 0.3
+    options = LLMSettings(temperature=0.3, seed=7, api_defaults=True).options()
+    assert "temperature" not in options and "seed" not in options and options["num_ctx"] == 4096
+
+
+def test_dry_run_prints_the_plan_and_starts_nothing(tmp_path: Path) -> None:
+    proc = sweep("--spec", str(PAPER), "--dry-run", "--out", str(tmp_path / "runs"))
+    assert proc.returncode == 0, proc.stderr
+    total = next(line for line in proc.stdout.splitlines() if "total (each run once)" in line)
+    cells = [c.strip() for c in total.split("│") if c.strip()]
+    assert cells[1:] == ["34", "188", "171", "168,440", "336,880"]
+    assert "shared with main" in proc.stdout and not (tmp_path / "runs").exists()
+    one = sweep("--spec", str(PAPER), "--dry-run", "--study", "level3", "--out", str(tmp_path / "runs"))
+    assert one.returncode == 0 and "level3" in one.stdout and "temperature" not in one.stdout
+
+
+def test_unknown_study_is_a_usage_error(tmp_path: Path) -> None:
+    proc = sweep("--spec", str(PAPER), "--study", "nope", "--dry-run")
+    assert proc.returncode == 2 and "no study nope" in proc.stderr and "main" in proc.stderr
+
+
+def test_two_studies_sharing_a_point_run_it_once(tmp_path: Path) -> None:
+    spec = tmp_path / "two.toml"
+    spec.write_text(f'out = "{tmp_path / "runs"}"\nvariations = 1\nonly = ["3"]\n'
+                    '[[models]]\nname = "gold"\nbackend = "gold"\n'
+                    '[[studies]]\nname = "a"\n'
+                    '[[studies]]\nname = "b"\ngrid.select_template = ["CI1", "CI2"]\n')
+    proc = sweep("--spec", str(spec), "--no-progress")
+    assert proc.returncode == 0, proc.stderr
+    runs = sorted(p.parent.name for p in (tmp_path / "runs").glob("*/run.json"))
+    assert runs == ["gold_T0_think-False_CI1_MBS1_L1-2_v1_s0_only-3", "gold_T0_think-False_CI2_MBS1_L1-2_v1_s0_only-3"]

@@ -63,13 +63,13 @@ class LLMSettings:
     api_key_env: str | None = None
 
     def options(self) -> dict[str, Any]:
-        opts: dict[str, Any] = {
-            "temperature": self.temperature,
-            "num_ctx": self.num_ctx,
-            "num_predict": self.num_predict,
-        }
-        if self.seed is not None:
-            opts["seed"] = self.seed
+        """Ollama's sampling options; with ``api_defaults`` the model's own temperature and a
+        random seed (the paper's thinking runs use each model's default temperature)."""
+        opts: dict[str, Any] = {"num_ctx": self.num_ctx, "num_predict": self.num_predict}
+        if not self.api_defaults:
+            opts["temperature"] = self.temperature
+            if self.seed is not None:
+                opts["seed"] = self.seed
         return opts
 
     def to_json(self) -> dict[str, Any]:
