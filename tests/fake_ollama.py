@@ -98,6 +98,12 @@ class FakeOllama:
             await self._runner.cleanup()
 
 
+def prompted_instance(instances: list[Any], prompt: str) -> Any:
+    """The task instance whose description the prompt holds; an assembly's prompt also holds its
+    parts' descriptions, so the longest match is the one asked about."""
+    return max((i for i in instances if i.description in prompt), key=lambda i: len(i.description))
+
+
 def openai_reply(content: str, finish_reason: str = "stop", reasoning: str | None = None,
                  prompt_tokens: int = 100, completion_tokens: int = 50) -> dict[str, Any]:
     """A non-streaming /v1/chat/completions response body as vLLM / llama.cpp send it."""

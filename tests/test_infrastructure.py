@@ -9,7 +9,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from fake_ollama import FakeOllama, chat_reply
+from fake_ollama import FakeOllama, chat_reply, prompted_instance
 from records import normalized
 
 from meceng.agents.llm import LLMSettings
@@ -42,8 +42,7 @@ class FailingFirst:
         if self.seen <= self.failures:
             return 503, {"error": "server busy, please try again"}, {}
         prompt = body["messages"][-1]["content"]
-        # the instance whose description the prompt holds (an assembly's prompt also holds its parts')
-        instance = max((i for i in self.instances if i.description in prompt), key=lambda i: len(i.description))
+        instance = prompted_instance(self.instances, prompt)
         if "<components>" in prompt:
             return 200, chat_reply(gold_selection(instance.required_components)), {}
         return 200, chat_reply(gold_code(instance.reference_program)), {}
