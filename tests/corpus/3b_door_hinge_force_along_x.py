@@ -1,5 +1,5 @@
-# corpus: task=door_hinge seed=1 expect=fail stage=graph_content_match category="rigid body configuration"
-# mistake: the pin-side leaf is placed with its reference position at the mount centre instead of [0, 0, 0]
+# corpus: task=door_hinge seed=1 expect=fail stage=graph_content_match category="gravity and load"
+# mistake: the door force points along the leaf (+x) instead of pushing it open (+y)
 import numpy as np
 import exudyn as exu
 from exudyn.utilities import *
@@ -16,10 +16,9 @@ mid_z = 1.5 * knuckle_length
 mount_x = -0.0286
 mountPoint = np.array([mount_x, 0, mid_z])
 
-# pin-side leaf sits at the door frame mount
 femPin = FEMinterface()
 femPin.LoadFromFile('pin_leaf.npz')
-pinLeaf = mbs.CreateFFRFReducedOrderObject('pin_leaf', femPin, referencePosition=mountPoint,
+pinLeaf = mbs.CreateFFRFReducedOrderObject('pin_leaf', femPin, referencePosition=[0, 0, 0],
                                            gravity=[0, 0, -g])
 
 femGap = FEMinterface()
@@ -33,7 +32,7 @@ mMount = mbs.AddMarker(MarkerBodyRigid(bodyNumber=oGround, localPosition=mountPo
 mbs.AddObject(GenericJoint(markerNumbers=[mMount, pinLeaf['pin_leaf:mount']], constrainedAxes=[1, 1, 1, 1, 1, 1]))
 mbs.AddObject(GenericJoint(markerNumbers=[pinLeaf['pin_leaf:pin'], gapLeaf['gap_leaf:bore']],
                            constrainedAxes=[1, 1, 1, 1, 1, 0]))
-mbs.AddLoad(Force(markerNumber=gapLeaf['gap_leaf:door'], loadVector=[0, door_force, 0]))
+mbs.AddLoad(Force(markerNumber=gapLeaf['gap_leaf:door'], loadVector=[door_force, 0, 0]))
 
 mbs.Assemble()
 
