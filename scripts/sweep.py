@@ -121,7 +121,8 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
 def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> None:
     runs = Table(title=f"Planned runs under {spec.out}", title_justify="left")
     for column in ("study", "run folder", "tasks", "LLM requests", "state"):
-        runs.add_column(column, justify="right" if column in ("tasks", "LLM requests") else "left")
+        runs.add_column(column, justify="right" if column in ("tasks", "LLM requests") else "left",
+                        overflow="fold")  # a folder name is folded onto a second line, never cut
     for item in planned:
         tasks, requests = point_workload(item.point)
         if item.shared_with:
@@ -188,7 +189,7 @@ def main(argv: list[str] | None = None) -> int:
         print("error: the sweep has no grid point (no models?)", file=sys.stderr)
         return 2
     if args.dry_run:
-        print_plan(spec, planned, Console(width=160))
+        print_plan(spec, planned, Console())
         return 0
     if args.name and len(points) > 1:
         print("error: --name needs a single grid point", file=sys.stderr)

@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -15,8 +16,9 @@ PAPER = ROOT / "sweeps" / "paper.toml"
 
 
 def sweep(*args: str) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "COLUMNS": "200"}  # a wide terminal: one table row per line
     return subprocess.run([sys.executable, str(ROOT / "scripts" / "sweep.py"), *args], capture_output=True,
-                          text=True, timeout=600)
+                          text=True, timeout=600, env=env)
 
 
 def test_no_server_gives_one_line_hint_and_fails(tmp_path: Path) -> None:
