@@ -20,12 +20,11 @@ import time
 from pathlib import Path
 from typing import Any
 
+from meceng.eval.categories import CATEGORIES
 from meceng.pipeline.rundir import record_key
 from meceng.pipeline.traces import traces_path
 from meceng.viewer.browser import load, screenshot
 from meceng.viewer.site import build_site
-
-CATEGORIES = ("initial conditions", "geometry", "inertia and mass", "stiffness and damping", "loads")
 
 
 def _fail(record: dict[str, Any], rng: random.Random) -> None:
