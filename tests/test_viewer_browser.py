@@ -129,5 +129,6 @@ def test_agent_page_shows_the_conversation(site: dict[str, Any], tmp_path: Path)
     page, path = _page_of(site, 0, "single_mass_oscillator-0.html")
     assert "Agent conversation" in page.dom and "tool result: simulate" in page.dom
     assert "TypeError" in page.dom and "round 2" in page.dom and "first program" in page.dom
+    assert "simulate ×1" in page.dom and "{'simulate': 1}" not in page.dom  # counts, not a Python dict
     picture = screenshot(path.as_uri(), tmp_path / "agent.png", (1200, 1600))
     assert picture.stat().st_size > 20_000

@@ -138,8 +138,9 @@ def _answer(step: dict[str, Any], title: str) -> str:
 
 def _chat(agent: dict[str, Any]) -> str:
     """The agent's conversation round by round: its messages, tool calls and the tool results."""
+    calls = ", ".join(f"{name} ×{n}" for name, n in (agent.get("tool_calls") or {}).items()) or "none"
     out = [_kv([("rounds", esc(agent.get("rounds"))), ("stop reason", esc(agent.get("stop_reason"))),
-                ("tool calls", esc(agent.get("tool_calls"))),
+                ("tool calls", esc(calls)),
                 ("first program", f"{'passed' if agent.get('first_overall') else 'failed'}"
                                   f" (first failure: {esc(agent.get('first_failure'))})"),
                 ("tokens", f"{agent.get('prompt_tokens')} prompt, {agent.get('completion_tokens')} completion")])]
