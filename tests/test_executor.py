@@ -95,3 +95,51 @@ async def test_solver_failure_after_assemble() -> None:
     code = instance.reference_program.replace("distance=length)", "distance=length * 3)")
     result = await execute(code, instance.sim.block(), ExecutionLimits(timeout_s=60))
     assert result.finished_assemble and not result.solved
+
+
+@pytest.mark.parametrize("warm", [False, True])
+async def test_a_cancelled_execution_kills_its_program(warm: bool, tmp_path) -> None:
+    """A reference execution whose task was lost is cancelled: its program must not run on."""
+    import asyncio
+
+    from meceng.tools.executor import child_env
+    from meceng.tools.warm import WarmPool
+
+    pool = WarmPool(child_env()) if warm else None
+    program = "import os, time\nopen('pid', 'w').write(str(os.getpid()))\ntime.sleep(60)\n"
+    limits = ExecutionLimits(timeout_s=90, guard=False, keep_scratch=True)
+    running = asyncio.ensure_future(execute(program, "", limits, scratch_root=tmp_path, check=False, pool=pool))
+    try:
+        deadline = time.monotonic() + 60
+        while not list(tmp_path.glob("*/pid")) or not next(tmp_path.glob("*/pid")).read_text():
+            assert time.monotonic() < deadline and not running.done(), "the program never started"
+            await asyncio.sleep(0.05)
+        pid = int(next(tmp_path.glob("*/pid")).read_text())
+        running.cancel()
+        with pytest.raises(asyncio.CancelledError):
+            await running
+        for _ in range(100):  # killed, then reaped by its parent
+            try:
+                os.kill(pid, 0)
+            except ProcessLookupError:
+                break
+            await asyncio.sleep(0.05)
+        else:
+            pytest.fail(f"program {pid} still runs after its execution was cancelled")
+    finally:
+        if pool is not None:
+            await pool.close()
+
+
+async def test_a_closed_fork_server_starts_no_new_one() -> None:
+    """Executions that come late (after the run closed its services) fail instead of leaving a
+    fork server behind that nobody stops."""
+    from meceng.tools.executor import child_env
+    from meceng.tools.warm import WarmPool
+
+    pool = WarmPool(child_env())
+    await pool.start()
+    await pool.close()
+    with pytest.raises(RuntimeError, match="closed"):
+        await pool.start()
+    assert not os.path.exists(pool.socket_path)

@@ -106,3 +106,30 @@ async def test_a_part_lost_to_the_server_makes_its_assembly_lost_and_resume_repa
                                               resume=True))
     assert _comparable(resumed) == _comparable(never_failed)
     assert all(t["overall"] for t in json.loads(resumed.read_text())["tasks"])
+
+
+async def test_a_lost_task_cancels_its_prefetched_reference() -> None:
+    """The reference starts while the model answers; when the answer is lost, nobody will grade
+    against it, and it must not outlive the run (it once started a fork server after the run closed)."""
+    import asyncio
+
+    from meceng.pipeline.evaluation import ReferenceCache
+
+    cancelled = asyncio.Event()
+
+    async def slow_reference(instance: TaskInstance) -> Any:
+        try:
+            await asyncio.sleep(60)
+        except asyncio.CancelledError:
+            cancelled.set()
+            raise
+
+    instance = _instances(("single_mass_oscillator",), 1)[0]
+    cache = ReferenceCache(slow_reference)
+    task = cache.start(instance)
+    await asyncio.sleep(0)
+    cache.discard(instance.key)
+    await asyncio.wait_for(cancelled.wait(), timeout=5)
+    assert task.cancelled() or task.done()
+    assert cache.start(instance) is not task  # a later request runs it afresh
+    cache.discard(instance.key)

@@ -45,9 +45,16 @@ class ReferenceCache:
         return await asyncio.shield(self.start(instance))
 
     def discard(self, key: str) -> None:
-        """Forget an instance's execution once its task is graded: a reference holds the whole
-        system and trajectory (a 1000-task run kept ~300 MB of them to the end)."""
-        self._tasks.pop(key, None)
+        """Forget an instance's execution once its task is done: a reference holds the whole
+        system and trajectory (a 1000-task run kept ~300 MB of them to the end). One still running
+        is cancelled (its task was lost to the server before grading): nobody will read it, and
+        left alone it would outlive the run and its fork server."""
+        _cancel(self._tasks.pop(key, None))
+
+
+def _cancel(task: asyncio.Task[Execution] | None) -> None:
+    if task is not None and not task.done():
+        task.cancel()
 
 
 def not_run(code_error: str | None) -> Execution:
@@ -82,7 +89,7 @@ class Evaluator:
         """The task is graded: its ground-truth executions are not needed again in this run."""
         self.references.discard(instance.key)
         for key in [k for k in self._remeshed if k[0] == instance.key]:
-            del self._remeshed[key]
+            _cancel(self._remeshed.pop(key))
 
     def prefetch(self, instance: TaskInstance) -> None:
         """Start the reference execution now, while the LLM is still busy with this task."""

@@ -57,9 +57,12 @@ class WarmPool:
         self.socket_path = os.path.join(self._dir, "server.sock")
         self._process: asyncio.subprocess.Process | None = None
         self._lock = asyncio.Lock()
+        self._closed = False
 
     async def start(self) -> None:
         async with self._lock:
+            if self._closed:  # a late caller must not start a server nobody will stop
+                raise RuntimeError("the fork server is closed")
             if self._process is not None and self._process.returncode is None:
                 return
             self._process = await asyncio.create_subprocess_exec(
@@ -77,6 +80,7 @@ class WarmPool:
         """Run one job in a forked child; returns (exit code, negative for a signal; timed out?)."""
         await self.start()
         reader, writer = await asyncio.open_unix_connection(self.socket_path)
+        pid: int | None = None
         try:
             writer.write(json.dumps({"job": str(job_path), "env": env, "limits": limits}).encode() + b"\n")
             await writer.drain()
@@ -88,15 +92,17 @@ class WarmPool:
                 timed_out = True
                 _kill_group(pid)
                 line = await asyncio.wait_for(reader.readline(), timeout=30)
-            _kill_group(pid)  # whatever the program left behind in its group dies with it
             code = json.loads(line)["exit"] if line else None
             return code, timed_out
         finally:
+            if pid is not None:  # ended, timed out or cancelled: its group dies with it
+                _kill_group(pid)
             writer.close()
             with contextlib.suppress(Exception):
                 await writer.wait_closed()
 
     async def close(self) -> None:
+        self._closed = True
         process = self._process
         self._process = None
         if process is not None and process.returncode is None:
