@@ -62,3 +62,20 @@ def test_level3_tasks_show_and_evaluate_an_assembly(tmp_path) -> None:
     graded = meceng("evaluate", "cantilever_beam", "--seed", "1", "--code", str(program), "--json")
     assert graded.returncode == 0, graded.stdout + graded.stderr
     assert json.loads(graded.stdout)["overall"] is True
+
+
+def test_run_summary_names_lost_tasks_and_how_to_finish_them(tmp_path, capsys) -> None:
+    from meceng.cli.commands import print_summary
+
+    lost = {"slug": "bearing_block_part", "seed": 0, "first_failure": "infrastructure", "overall": False,
+            "infrastructure_error": "ollama error 404: model 'x' not found"}
+    summary = {"counted": 1, "infrastructure_failures": 1,
+               "levels": {"3a": {"counted": 0, "infrastructure_failures": 1, "rates": {"overall": None}},
+                          "1": {"counted": 1, "infrastructure_failures": 0, "rates": {"overall": 1.0}}}}
+    (tmp_path / "run.json").write_text(json.dumps({"summary": summary, "tasks": [
+        lost, {"slug": "single_pendulum", "seed": 0, "first_failure": None, "overall": True}]}))
+    print_summary(tmp_path / "run.json")
+    out = capsys.readouterr().out
+    assert "level 3a (0): nothing graded  [1 lost to the server]" in out and "level 1 (1): overall: 100.0%" in out
+    assert "bearing_block_part seed 0: ollama error 404" in out
+    assert f"meceng run --resume {tmp_path}" in out

@@ -91,7 +91,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--code-template", default=DEFAULT_CODE)
     parser.add_argument("--no-progress", action="store_true")
     parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
-                        help="continue a killed run in RUN_DIR with its saved settings")
+                        help="continue a killed run in RUN_DIR with its saved settings (--host, if given, "
+                             "replaces the saved servers)")
 
 
 def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
@@ -138,4 +139,6 @@ def resumed_settings(args: argparse.Namespace) -> RunSettings:
         raise SystemExit(f"error: {run_dir} is not a run folder with a readable settings.json ({exc})") from None
 
     settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
+    if args.host:  # where the server is now: not part of what the run measures
+        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)))
     return dataclasses.replace(settings, progress=not args.no_progress)

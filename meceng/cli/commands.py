@@ -113,11 +113,19 @@ def print_summary(run_json: Path) -> None:
     # one line per level: parts and assemblies have different stages, a mixed rate would mislead
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
-        print(f"level {level} ({block['counted']}): {line}")
+        lost = block.get("infrastructure_failures") or 0
+        if not block["counted"]:
+            line = "nothing graded"
+        print(f"level {level} ({block['counted']}): {line}" + (f"  [{lost} lost to the server]" if lost else ""))
     totals = summary.get("tokens", {}).get("totals")
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
               f"(of which {totals['reasoning']:,} reasoning)")
+    lost = next((t for t in run["tasks"] if t.get("first_failure") == "infrastructure"), None)
+    if lost is not None:
+        print(f"{summary['infrastructure_failures']} tasks lost to the server, left out of the rates; the first: "
+              f"{lost['slug']} seed {lost['seed']}: {lost.get('infrastructure_error')}\n"
+              f"once the server is healthy: meceng run --resume {run_json.parent}")
 
 
 def cmd_report(args: argparse.Namespace) -> int:
