@@ -79,3 +79,19 @@ def test_run_summary_names_lost_tasks_and_how_to_finish_them(tmp_path, capsys) -
     assert "level 3a (0): nothing graded  [1 lost to the server]" in out and "level 1 (1): overall: 100.0%" in out
     assert "bearing_block_part seed 0: ollama error 404" in out
     assert f"meceng run --resume {tmp_path}" in out
+
+
+def test_resume_on_another_server(tmp_path) -> None:
+    """--resume keeps everything a run measures; --host says where the server is now."""
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
+
+    parser = build_parser()
+    first = parser.parse_args(["run", "--model", "m:1b", "--host", "http://127.0.0.1:1", "--temperature", "0.3",
+                               "--out", str(tmp_path), "--name", "r"])
+    (tmp_path / "r").mkdir()
+    (tmp_path / "r" / "settings.json").write_text(json.dumps(run_settings(first, llm_settings(first)).to_json()))
+    same = resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "r")]))
+    moved = resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "r"), "--host", "http://127.0.0.1:2"]))
+    assert same.llm.hosts == ("http://127.0.0.1:1",) and moved.llm.hosts == ("http://127.0.0.1:2",)
+    assert moved.llm.temperature == 0.3 and moved.llm.model == "m:1b" and moved.resume
