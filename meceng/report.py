@@ -103,7 +103,9 @@ def _difficulty_plot(path: Path, rows: list[dict[str, Any]]) -> None:
 
 def _table(headers: list[str], rows: list[list[str]], links: list[str] | None = None) -> tuple[str, str]:
     """The same table as Markdown and as HTML; ``links``: a URL per row for its first cell (the
-    viewer's records of that row)."""
+    viewer's records of that row). No rows, no table: its section is left out of the report."""
+    if not rows:
+        return "", ""
     md = ["| " + " | ".join(headers) + " |", "|" + "---|" * len(headers)]
     md += ["| " + " | ".join(r) + " |" for r in rows]
     head = "".join(f"<th>{html.escape(h)}</th>" for h in headers)
@@ -185,14 +187,14 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     md, ht = _table(["model", "think", "n", "overall", "completion tokens (mean)", "LLM time (min)"],
                     [[r["model"], r["think"], str(r["n"]), r["overall"].text(), f"{r['completion_tokens_mean']:.0f}",
                       f"{r['llm_time_min']:.2f}"] for r in thinking])
-    sections.append(("Thinking (Table 4)", md, ht, None))
+    sections.append(("Thinking (Table 4; levels 1-2)", md, ht, None))
 
     categories = error_category_table(runs)
     md, ht = _table(["model", "n", *CATEGORIES, "mean per task"],
                     [[r["model"], str(r["n"]),
                       *[f"{r['counts'][c]} ({100 * r['proportions'][c]:.0f} %)" for c in CATEGORIES],
                       f"{r['mean_per_task']:.2f}"] for r in categories])
-    sections.append(("Graph content error categories (Table 5)", md, ht, None))
+    sections.append(("Graph content error categories (Table 5; levels 1-2)", md, ht, None))
 
     tokens = token_cost_table(runs, model_prices(models_file))
     md, ht = _table(["model", "tasks", "prompt tokens", "completion tokens", "of which reasoning", "cost"],
@@ -205,14 +207,14 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     md, ht = _table(["model", "topology failures", *TOPOLOGY_CAUSES, "not recorded"],
                     [[r["model"], str(r["failures"]), *[str(r[c]) for c in TOPOLOGY_CAUSES], str(r["unknown"])]
                      for r in causes])
-    sections.append(("Topology failures by cause (beside Table 5)", md, ht, None))
+    sections.append(("Topology failures by cause (beside Table 5; levels 1, 2 and 3b)", md, ht, None))
 
     temperature = series(runs, "temperature")
     if any(len(v) > 1 for v in temperature.values()):
         _line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
     md, ht = _table(["model", "temperature", "overall"],
                     [[m, k, r.text()] for m, d in temperature.items() for k, r in d.items()])
-    sections.append(("Temperature (Fig. 8)", md, ht,
+    sections.append(("Temperature (Fig. 8; levels 1-2)", md, ht,
                      "temperature.png" if (out / "temperature.png").exists() else None))
 
     select = component_series(runs)
@@ -220,13 +222,13 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     _bar_plot(out / "select_templates.png", select, "Component selection per selection prompt", "selection (%)")
     md, ht = _table(["model", "selection prompt", "component selection", "overall"],
                     [[m, k, r.text(), select_overall[m][k].text()] for m, d in select.items() for k, r in d.items()])
-    sections.append(("Component-selection prompts (Fig. 9)", md, ht, "select_templates.png"))
+    sections.append(("Component-selection prompts (Fig. 9; levels 1-2)", md, ht, "select_templates.png"))
 
     code = series(runs, "code_template")
     _bar_plot(out / "code_templates.png", code, "Overall success per code prompt", "overall (%)")
     md, ht = _table(["model", "code prompt", "overall"],
                     [[m, k, r.text()] for m, d in code.items() for k, r in d.items()])
-    sections.append(("Code-generation prompts (Fig. 10)", md, ht, "code_templates.png"))
+    sections.append(("Code-generation prompts (Fig. 10; levels 1-2)", md, ht, "code_templates.png"))
 
     hard = difficulty(runs)
     _difficulty_plot(out / "difficulty.png", hard)
@@ -285,9 +287,12 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     md_doc = ["# MecEng report", "", intro, ""]
     html_doc = ["<!doctype html><html><head><meta charset='utf-8'><title>MecEng report</title>",
                 "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}table{border-collapse:collapse;"
-                "font-size:13px}td,th{border:1px solid #ccc;padding:3px 6px}th{background:#eef}</style></head><body>",
+                "font-size:13px}td,th{border:1px solid #ccc;padding:3px 6px}th{background:#eef}"
+                "img{max-width:100%;height:auto}</style></head><body>",
                 "<h1>MecEng report</h1>", f"<p>{html.escape(intro)}</p>"]
     for title, md, ht, png in sections:
+        if not md:  # nothing of that kind in these runs (a flexible-only run has no Table 4)
+            continue
         md_doc += [f"## {title}", "", md, ""]
         html_doc += [f"<h2>{html.escape(title)}</h2>", ht]
         if png:

@@ -133,6 +133,33 @@ def test_level3_tables_count_parts_and_assemblies_apart(tmp_path) -> None:
     assert timing["generated_tokens_k"] == 2.5 and timing["context_p95"] == 1000
 
 
+def test_rigid_tables_count_levels_1_and_2_only(tmp_path) -> None:
+    """Tables 4 and 5 and Figures 8-10 are about levels 1-2: a part has no component-selection
+    stage of that name and must not count as a failed selection; a flexible-only run has no such
+    sections at all."""
+    from meceng.eval.report import component_series, error_category_table, load_runs, series, thinking_table
+    from meceng.report import build_report
+
+    rigid = {"level": "1", "slug": "r", "seed": 0, "overall": True, "first_failure": None,
+             "stages": [{"name": "choose_components", "passed": True}], "error_categories": []}
+    part = {"level": "3a", "slug": "p", "seed": 0, "origin": "a@0", "overall": False, "first_failure": "mesh_match",
+            "stages": [{"name": "choose_part_components", "passed": True}, {"name": "mesh_match", "passed": False}]}
+    settings = {"llm": {"model": "m", "temperature": 0, "think": False},
+                "prompt": {"select_template": "CI1", "code_template": "MBS1"}}
+    for name, tasks in (("mixed", [rigid, part, part]), ("flexible", [part])):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "run.json").write_text(json.dumps({"settings": settings, "summary": {}, "tasks": tasks}))
+    mixed = load_runs([tmp_path / "mixed"])
+    assert component_series(mixed)["m"]["CI1"].n == 1 and component_series(mixed)["m"]["CI1"].passed == 1
+    assert series(mixed, "temperature")["m"]["0"].n == 1 and thinking_table(mixed)[0]["n"] == 1
+    assert error_category_table(mixed)[0]["n"] == 1
+    flexible = load_runs([tmp_path / "flexible"])
+    assert thinking_table(flexible) == [] and component_series(flexible) == {} and error_category_table(flexible) == []
+    build_report([tmp_path / "flexible"], tmp_path / "report")
+    text = (tmp_path / "report" / "report.md").read_text()
+    assert "Table 6" in text and "Table 4" not in text and "Fig. 9" not in text
+
+
 def test_wilson_interval_holds_the_rate_at_the_ends() -> None:
     from meceng.eval.report import Rate
 

@@ -19,6 +19,11 @@ from meceng.eval.aggregate import token_totals
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.topology import CAUSES
 
+#: Tables 2-5 and Figures 8-10 are about the rigid-body levels; a part has no such stages.
+RIGID_LEVELS = ("1", "2")
+#: the levels graded by the system graph, where a topology can fail (assemblies included)
+GRAPH_LEVELS = ("1", "2", "3b")
+
 RIGID_COLUMNS = (
     ("choose_components", "comp."),
     ("solver_success", "solver"),
@@ -244,7 +249,9 @@ def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
         groups[(run.model, run.think)].append(run)
     rows = []
     for (model, think), members in sorted(groups.items()):
-        tasks = [t for r in members for t in r.graded()]
+        tasks = [t for r in members for t in r.graded(RIGID_LEVELS)]
+        if not tasks:
+            continue
         completion = [t.get("tokens", {}).get("completion", 0) for t in tasks]
         llm_time = sum(t.get("timing", {}).get("llm_s", 0.0) for t in tasks)
         rows.append({"model": model, "think": think, "n": len(tasks), "overall": stage_rate(tasks, "overall"),
@@ -254,10 +261,8 @@ def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
 
 
 def error_category_table(runs: list[Run]) -> list[dict[str, Any]]:
-    """Table 5: per model, graph-content error categories (once per task), proportions, means."""
-    groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
-    for run in runs:
-        groups[run.model].extend(run.graded())
+    """Table 5: per model, graph-content error categories (once per task), proportions, means; levels 1-2."""
+    groups = _by_model(runs, RIGID_LEVELS)
     rows = []
     for model, tasks in sorted(groups.items()):
         counts = {c: sum(1 for t in tasks if c in t.get("error_categories", [])) for c in CATEGORIES}
@@ -280,28 +285,36 @@ def topology_cause_rows(groups: dict[str, list[dict[str, Any]]]) -> list[dict[st
 
 
 def topology_cause_table(runs: list[Run]) -> list[dict[str, Any]]:
-    """Beside Table 5: why topology failed, per model (the paper's rule fails an inert surplus
-    item too; this table shows how much of the failure that is)."""
+    """Beside Table 5: why topology failed, per model, on every level graded by the system graph
+    (the paper's rule fails an inert surplus item too; this table shows how much of the failure
+    that is)."""
+    return topology_cause_rows(_by_model(runs, GRAPH_LEVELS))
+
+
+def _by_model(runs: list[Run], levels: tuple[str, ...]) -> dict[str, list[dict[str, Any]]]:
+    """Graded records of ``levels`` per model; a model with none of them has no entry."""
     groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
     for run in runs:
-        groups[run.model].extend(run.graded())
-    return topology_cause_rows(groups)
+        groups[run.model].extend(run.graded(levels))
+    return {model: tasks for model, tasks in groups.items() if tasks}
 
 
 def series(runs: list[Run], axis: str) -> dict[str, dict[str, Rate]]:
-    """model -> value of ``axis`` (temperature, think, select_template, code_template) -> overall."""
+    """model -> value of ``axis`` (temperature, think, select_template, code_template) -> overall, levels 1-2."""
     out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
     for run in runs:
         key = f"{run.temperature:g}" if axis == "temperature" else str(getattr(run, axis))
-        out[run.model][key].extend(run.graded())
+        if tasks := run.graded(RIGID_LEVELS):
+            out[run.model][key].extend(tasks)
     return {m: {k: stage_rate(v, "overall") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
 
 
 def component_series(runs: list[Run]) -> dict[str, dict[str, Rate]]:
-    """model -> selection template -> component-selection rate (Fig. 9, solid bars)."""
+    """model -> selection template -> component-selection rate (Fig. 9, solid bars), levels 1-2."""
     out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
     for run in runs:
-        out[run.model][run.select_template].extend(run.graded())
+        if tasks := run.graded(RIGID_LEVELS):
+            out[run.model][run.select_template].extend(tasks)
     return {m: {k: stage_rate(v, "choose_components") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
 
 
