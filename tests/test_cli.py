@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -95,3 +96,15 @@ def test_resume_on_another_server(tmp_path) -> None:
     moved = resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "r"), "--host", "http://127.0.0.1:2"]))
     assert same.llm.hosts == ("http://127.0.0.1:1",) and moved.llm.hosts == ("http://127.0.0.1:2",)
     assert moved.llm.temperature == 0.3 and moved.llm.model == "m:1b" and moved.resume
+
+
+def test_a_temperature_the_api_will_not_get_is_refused(tmp_path) -> None:
+    """--temperature with --api-defaults or Anthropic would be dropped silently: a clear error instead."""
+    env = {**os.environ, "ANTHROPIC_API_KEY": "k", "OPENAI_API_KEY": "k"}
+    for extra, said in ((["--backend", "anthropic"], "takes no sampling parameters"),
+                        (["--backend", "openai", "--api-defaults"], "--api-defaults sends no temperature")):
+        proc = subprocess.run([sys.executable, "-m", "meceng", "run", "--model", "x", *extra, "--temperature", "0.7",
+                               "--only", "1", "--out", str(tmp_path / "runs")], capture_output=True, text=True,
+                              timeout=120, env=env)
+        assert proc.returncode == 2 and said in proc.stderr and "--temperature 0.7" in proc.stderr
+    assert not (tmp_path / "runs").exists()

@@ -59,7 +59,7 @@ def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--api-key-env", default=None, metavar="VARIABLE",
                         help="environment variable holding the API key (default OPENAI_API_KEY, "
                              "ANTHROPIC_API_KEY); the key itself is never written anywhere")
-    parser.add_argument("--temperature", type=float, default=0.0)
+    parser.add_argument("--temperature", type=float, default=None, help="sampling temperature (default 0)")
     parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
     parser.add_argument("--think", type=parse_think, default=False, help="on/off or low/medium/high")
     parser.add_argument("--num-ctx", type=positive_int, default=4096)
@@ -101,10 +101,16 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
     backend = args.backend or ("gold" if model == "gold" else "ollama")
     if model == "gold":
         backend = "gold"
+    api_defaults = args.api_defaults or backend == "anthropic"
+    if api_defaults and args.temperature is not None:  # it would be dropped without a word
+        why = ("Anthropic's API (version 2026-10-21) takes no sampling parameters" if backend == "anthropic"
+               else "--api-defaults sends no temperature")
+        raise ValueError(f"--temperature {args.temperature:g} cannot be sent: {why}")
+    if temperature is None:
+        temperature = 0.0 if args.temperature is None else args.temperature
     return LLMSettings(
         model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
-        api_defaults=args.api_defaults or backend == "anthropic", api_key_env=args.api_key_env,
-        temperature=args.temperature if temperature is None else temperature, seed=args.llm_seed,
+        api_defaults=api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
         think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
         batch_size=args.batch_size, timeout_s=args.llm_timeout,
     )

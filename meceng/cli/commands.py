@@ -93,7 +93,11 @@ def cmd_run(args: argparse.Namespace) -> int:
     from meceng.logs import configure_logging
     from meceng.pipeline import run_benchmark
 
-    settings = resumed_settings(args) if args.resume else run_settings(args, llm_settings(args))
+    try:
+        settings = resumed_settings(args) if args.resume else run_settings(args, llm_settings(args))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     configure_logging(None, console=True)
     try:
         path = asyncio.run(run_benchmark(settings))
