@@ -79,7 +79,7 @@ def test_run_summary_names_lost_tasks_and_how_to_finish_them(tmp_path, capsys) -
     out = capsys.readouterr().out
     assert "level 3a (0): nothing graded  [1 lost to the server]" in out and "level 1 (1): overall: 100.0%" in out
     assert "bearing_block_part seed 0: ollama error 404" in out
-    assert f"meceng run --resume {tmp_path}" in out
+    assert f"meceng run --resume {tmp_path}" in out and "1 task lost to the server" in out
 
 
 def test_resume_on_another_server(tmp_path) -> None:

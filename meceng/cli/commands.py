@@ -127,9 +127,10 @@ def print_summary(run_json: Path) -> None:
               f"(of which {totals['reasoning']:,} reasoning)")
     lost = next((t for t in run["tasks"] if t.get("first_failure") == "infrastructure"), None)
     if lost is not None:
-        print(f"{summary['infrastructure_failures']} tasks lost to the server, left out of the rates; the first: "
+        count = summary["infrastructure_failures"]
+        print(f"{count} task{'s' if count != 1 else ''} lost to the server, left out of the rates; the first: "
               f"{lost['slug']} seed {lost['seed']}: {lost.get('infrastructure_error')}\n"
-              f"once the server is healthy: meceng run --resume {run_json.parent}")
+              f"redo them once that is fixed: meceng run --resume {run_json.parent}")
 
 
 def cmd_report(args: argparse.Namespace) -> int:
