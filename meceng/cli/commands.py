@@ -117,10 +117,11 @@ def print_summary(run_json: Path) -> None:
     # one line per level: parts and assemblies have different stages, a mixed rate would mislead
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
-        lost = block.get("infrastructure_failures") or 0
+        lost_here = block.get("infrastructure_failures") or 0
         if not block["counted"]:
             line = "nothing graded"
-        print(f"level {level} ({block['counted']}): {line}" + (f"  [{lost} lost to the server]" if lost else ""))
+        print(f"level {level} ({block['counted']}): {line}"
+              + (f"  [{lost_here} lost to the server]" if lost_here else ""))
     totals = summary.get("tokens", {}).get("totals")
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
