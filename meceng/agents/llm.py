@@ -62,6 +62,12 @@ class LLMSettings:
     # is a setting, the key never is
     api_key_env: str | None = None
 
+    def __post_init__(self) -> None:
+        # Anthropic's API (version 2026-10-21) takes no sampling parameters: whoever makes the
+        # settings (command line, sweep spec, a resumed run), such a run has the API's defaults
+        if self.backend == "anthropic" and not self.api_defaults:
+            object.__setattr__(self, "api_defaults", True)
+
     def options(self) -> dict[str, Any]:
         """Ollama's sampling options; with ``api_defaults`` the model's own temperature and a
         random seed (the paper's thinking runs use each model's default temperature)."""

@@ -101,19 +101,19 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
     backend = args.backend or ("gold" if model == "gold" else "ollama")
     if model == "gold":
         backend = "gold"
-    api_defaults = args.api_defaults or backend == "anthropic"
-    if api_defaults and args.temperature is not None:  # it would be dropped without a word
-        why = ("Anthropic's API (version 2026-10-21) takes no sampling parameters" if backend == "anthropic"
-               else "--api-defaults sends no temperature")
-        raise ValueError(f"--temperature {args.temperature:g} cannot be sent: {why}")
     if temperature is None:
         temperature = 0.0 if args.temperature is None else args.temperature
-    return LLMSettings(
+    settings = LLMSettings(
         model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
-        api_defaults=api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
+        api_defaults=args.api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
         think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
         batch_size=args.batch_size, timeout_s=args.llm_timeout,
     )
+    if settings.api_defaults and args.temperature is not None:  # it would be dropped without a word
+        why = ("Anthropic's API (version 2026-10-21) takes no sampling parameters" if backend == "anthropic"
+               else "--api-defaults sends no temperature")
+        raise ValueError(f"--temperature {args.temperature:g} cannot be sent: {why}")
+    return settings
 
 
 def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = None) -> RunSettings:

@@ -299,23 +299,20 @@ def _by_model(runs: list[Run], levels: tuple[str, ...]) -> dict[str, list[dict[s
     return {model: tasks for model, tasks in groups.items() if tasks}
 
 
-def series(runs: list[Run], axis: str) -> dict[str, dict[str, Rate]]:
-    """model -> value of ``axis`` (temperature, think, select_template, code_template) -> overall, levels 1-2."""
+def series(runs: list[Run], axis: str, stage: str = "overall") -> dict[str, dict[str, Rate]]:
+    """model -> value of ``axis`` (temperature, think, select_template, code_template) -> the rate
+    of ``stage``, levels 1-2."""
     out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
     for run in runs:
         key = f"{run.temperature:g}" if axis == "temperature" else str(getattr(run, axis))
         if tasks := run.graded(RIGID_LEVELS):
             out[run.model][key].extend(tasks)
-    return {m: {k: stage_rate(v, "overall") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
+    return {m: {k: stage_rate(v, stage) for k, v in sorted(d.items())} for m, d in sorted(out.items())}
 
 
 def component_series(runs: list[Run]) -> dict[str, dict[str, Rate]]:
     """model -> selection template -> component-selection rate (Fig. 9, solid bars), levels 1-2."""
-    out: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
-    for run in runs:
-        if tasks := run.graded(RIGID_LEVELS):
-            out[run.model][run.select_template].extend(tasks)
-    return {m: {k: stage_rate(v, "choose_components") for k, v in sorted(d.items())} for m, d in sorted(out.items())}
+    return series(runs, "select_template", "choose_components")
 
 
 def difficulty(runs: list[Run]) -> list[dict[str, Any]]:
