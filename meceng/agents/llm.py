@@ -61,6 +61,9 @@ class LLMSettings:
     # the environment variable holding the API key (None: the backend's conventional one); the name
     # is a setting, the key never is
     api_key_env: str | None = None
+    # the model takes images: the agent's ``snapshot`` tool answers with a picture (Anthropic image
+    # blocks, OpenAI ``image_url`` parts, Ollama ``images``); otherwise with a text description
+    vision: bool = False
 
     def __post_init__(self) -> None:
         # Anthropic's API (version 2026-10-21) takes no sampling parameters: whoever makes the
@@ -84,7 +87,7 @@ class LLMSettings:
             "temperature": self.temperature, "seed": self.seed, "think": self.think,
             "num_ctx": self.num_ctx, "num_predict": self.num_predict, "keep_alive": self.keep_alive,
             "batch_size": self.batch_size, "timeout_s": self.timeout_s, "max_attempts": self.max_attempts,
-            "api_defaults": self.api_defaults, "api_key_env": self.api_key_env,
+            "api_defaults": self.api_defaults, "api_key_env": self.api_key_env, "vision": self.vision,
         }
 
 
@@ -239,9 +242,13 @@ def assistant_message(response: ChatResponse) -> dict[str, Any]:
     return message
 
 
-def tool_message(call: ToolCall, result: str) -> dict[str, Any]:
-    """A tool's answer to one call."""
-    return {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
+def tool_message(call: ToolCall, result: str, images: tuple[str, ...] = ()) -> dict[str, Any]:
+    """A tool's answer to one call; ``images`` are base64-encoded PNGs (a ``snapshot``), which each
+    backend sends the way its API carries pictures."""
+    message: dict[str, Any] = {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
+    if images:
+        message["images"] = list(images)
+    return message
 
 
 def user_messages(*texts: str) -> tuple[dict[str, str], ...]:
