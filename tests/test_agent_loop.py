@@ -10,9 +10,9 @@ import pytest
 from fake_ollama import FakeOllama, chat_reply
 
 from meceng.agents.catalog import part_catalog, rigid_catalog
+from meceng.agents.inspect.answer import num
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
-from meceng.agents.inspect.answer import num
 from meceng.agents.toolbox import Toolbox
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
