@@ -19,7 +19,7 @@ from fake_ollama import FakeOllama, chat_reply
 
 from meceng.agents.catalog import rigid_catalog
 from meceng.agents.inspect.answer import num
-from meceng.agents.inspect.snapshot import box_half_sizes
+from meceng.agents.inspect.scene import box_half_sizes
 from meceng.agents.inspect.view import build_view
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection

@@ -58,8 +58,9 @@ def _body_line(body: Body, ask: Ask) -> str:
     facts = []
     if body.mass is not None:
         facts.append(f"mass {num(body.mass)}")
-    if body.kind == "RigidBody" and any(abs(c) > 0 for c in body.centre_local):
-        facts.append(f"centre of mass {vec(body.centre_local)} from its reference point (body axes)")
+    if body.kind in ("RigidBody", "FlexibleBody") and any(abs(c) > 1e-12 for c in body.centre_local):
+        origin = "its floating frame's origin" if body.kind == "FlexibleBody" else "its reference point"
+        facts.append(f"centre of mass {vec(body.centre_local)} from {origin} (body axes)")
     if body.principal_inertia is not None:
         facts.append(f"principal inertia {vec(body.principal_inertia)}")
     start = body.state_at(0.0)

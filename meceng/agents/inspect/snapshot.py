@@ -1,10 +1,11 @@
 """A picture of what a program built: its system at t = 0 and at a later time, or its part.
 
-Drawn headless with matplotlib (Agg) from a system view: rigid bodies as inertia-equivalent boxes
-(the box with the body's mass and principal moments, turned with the body), mass points as dots,
-the ground as a grey square, joints at their points with their axes, springs and distance
-constraints as lines, contact spheres as circles, loads as arrows. Three orthogonal views and an
-isometric one per row, axes labelled in metres. Text-only models get ``describe`` instead.
+Drawn headless with matplotlib (Agg) from the scene of a system view (``scene.py``): rigid bodies
+as inertia-equivalent boxes (the box with the body's mass and principal moments, turned with the
+body), mass points as dots, the ground as a grey square, joints at their points with their axes,
+springs and distance constraints as lines, contact spheres as circles, loads as arrows. Three
+orthogonal views and an isometric one per row, axes labelled in metres. Text-only models get
+``describe`` instead.
 """
 
 from __future__ import annotations
@@ -21,198 +22,87 @@ from matplotlib.patches import Circle, Polygon
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from meceng.agents.inspect.answer import num, vec
-from meceng.agents.inspect.view import Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.scene import (
+    COLOURS,
+    JOINTS,
+    LEGEND,
+    VIEWS,
+    Projection,
+    Shape,
+    bounds,
+    box_half_sizes,
+    build_scene,
+    hull,
+    sample_index,
+)
+from meceng.agents.inspect.view import SystemView
 
-#: (title, the two global axes shown) of the orthogonal views
-VIEWS = (("top: x-y (looking down z)", (0, 1)), ("front: x-z (looking along y)", (0, 2)),
-         ("side: y-z (looking along x)", (1, 2)))
-_AXIS = "xyz"
-_BOX_FACES = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
-_COLORS = {"SpringDamper": "tab:green", "CartesianSpringDamper": "tab:green", "DistanceConstraint": "tab:purple",
-           "SphereSphereContact": "tab:orange", "TorsionalSpringDamper": "tab:green"}
-_JOINTS = frozenset({"RevoluteJoint", "PrismaticJoint", "SphericalJoint", "GenericJoint", "RollingDisc"})
-
-
-def box_half_sizes(body: Body) -> np.ndarray | None:
-    """Half edge lengths of the homogeneous box with the body's mass and principal moments."""
-    if body.principal_inertia is None or body.mass is None or body.mass <= 0 or len(body.principal_inertia) != 3:
-        return None
-    i1, i2, i3 = body.principal_inertia
-    squares = 6.0 / body.mass * np.array([i2 + i3 - i1, i1 + i3 - i2, i1 + i2 - i3])
-    return 0.5 * np.sqrt(np.clip(squares, 0.0, None))
+_AXIS_NAMES = "xyz"
 
 
-def box_corners(body: Body, state: BodyState) -> np.ndarray | None:
-    """The 8 corners of the inertia-equivalent box in global coordinates, or None (no orientation)."""
-    half = box_half_sizes(body)
-    if half is None or state.rotation is None or body.principal_axes is None:
-        return None
-    signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
-    local = (signs * half) @ body.principal_axes.T
-    return np.asarray(state.position) + local @ state.rotation.T
+def _axis_label(vector: tuple[float, ...]) -> str:
+    k = int(np.argmax(np.abs(vector)))
+    return f"{'-' if vector[k] < 0 else ''}{_AXIS_NAMES[k]} [m]" if abs(vector[k]) > 0.999 else ""
 
 
-def _sample_index(view: SystemView, t: float) -> int:
-    return int(np.argmin([abs(s - t) for s in view.times])) if view.times else 0
+def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection) -> None:
+    """One scene in one view on 2D matplotlib axes."""
+    for shape in shapes:
+        xy = projection.apply(np.asarray(shape.points))
+        colour = COLOURS[shape.role]
+        if shape.kind == "box":
+            ax.add_patch(Polygon(hull(xy), closed=True, alpha=0.35, facecolor=colour, edgecolor=colour, lw=0.6))
+        elif shape.kind == "line":
+            ax.plot(xy[:, 0], xy[:, 1], "--" if shape.role == "distance" else "-", color=colour,
+                    lw=1.5 if shape.role == "joint" else 1.0)
+        elif shape.kind == "point":
+            style = {"ground": ("s", 8), "joint": ("o", 5)}.get(shape.role, ("o", 6))
+            ax.plot(xy[0, 0], xy[0, 1], style[0], color=colour, ms=style[1],
+                    mfc="none" if shape.role == "joint" else colour)
+        elif shape.kind == "circle":
+            ax.add_patch(Circle((xy[0, 0], xy[0, 1]), shape.radius, fill=False, color=colour, lw=0.8))
+        elif shape.kind == "arrow":
+            ax.annotate("", (xy[1, 0], xy[1, 1]), (xy[0, 0], xy[0, 1]), arrowprops={"arrowstyle": "->",
+                                                                                   "color": colour})
+        elif shape.kind == "label":
+            ax.annotate(shape.text, (xy[0, 0], xy[0, 1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
 
 
-def _markers(view: SystemView, k: int) -> dict[int, tuple[float, ...]]:
-    return view.marker_states[k] if k < len(view.marker_states) else {}
+def _triad(ax: plt.Axes, projection: Projection) -> None:
+    """The global axes as seen in a view without axis-aligned screen directions."""
+    for k, name in enumerate(_AXIS_NAMES):
+        d = projection.apply(np.eye(3)[k])[0] * 0.08
+        ax.annotate("", (0.12 + d[0], 0.12 + d[1]), (0.12, 0.12), xycoords="axes fraction",
+                    arrowprops={"arrowstyle": "->", "color": "k", "lw": 0.8})
+        ax.text(0.12 + 1.3 * d[0], 0.12 + 1.3 * d[1], name, transform=ax.transAxes, fontsize=7)
 
 
-def _connector_points(c: Connector, markers: dict[int, tuple[float, ...]]) -> list[np.ndarray]:
-    return [np.asarray(markers[m][:3]) for m in c.markers if m in markers and len(markers[m]) >= 3]
-
-
-def _scene_size(view: SystemView) -> float:
-    points = [s.position for b in view.bodies for s in b.states if len(s.position) >= 3]
-    points += [p for markers in view.marker_states for p in markers.values() if len(p) >= 3]
-    if not points:
-        return 1.0
-    array = np.asarray(points, dtype=float)[:, :3]
-    return float(max(np.ptp(array, axis=0).max(), 1e-3))
-
-
-def _draw_2d(ax: plt.Axes, view: SystemView, k: int, axes: tuple[int, int], size: float) -> None:
-    i, j = axes
-    t = view.times[k] if view.times else 0.0
-    markers = _markers(view, k)
-    for c in view.connectors:
-        points = _connector_points(c, markers)
-        if len(points) == 2 and c.kind not in _JOINTS:
-            style = "--" if c.kind == "DistanceConstraint" else "-"
-            ax.plot([points[0][i], points[1][i]], [points[0][j], points[1][j]], style,
-                    color=_COLORS.get(c.kind, "tab:gray"), lw=1)
-            if c.kind == "SphereSphereContact":
-                radii = c.parameters.get("spheresRadii") or []
-                for point, radius in zip(points, radii, strict=False):
-                    ax.add_patch(Circle((point[i], point[j]), float(radius), fill=False, color="tab:orange", lw=0.8))
-        elif points and c.kind in _JOINTS:
-            p = points[0]
-            ax.plot(p[i], p[j], "o", color="tab:red", ms=5, mfc="none")
-            if c.axis is not None and k == 0:
-                a = np.asarray(c.axis) * 0.12 * size
-                ax.plot([p[i] - a[i], p[i] + a[i]], [p[j] - a[j], p[j] + a[j]], color="tab:red", lw=1.5)
-    for body in view.bodies:
-        state = body.state_at(t)
-        if state is None or len(state.position) < 3:
-            continue
-        corners = box_corners(body, state)
-        if body.is_ground:
-            ax.plot(state.position[i], state.position[j], "s", color="0.4", ms=8)
-        elif corners is not None:
-            hull = _hull(corners[:, [i, j]])
-            ax.add_patch(Polygon(hull, closed=True, alpha=0.35, color="tab:blue"))
-        else:
-            ax.plot(state.position[i], state.position[j], "o", color="tab:blue", ms=6)
-        ax.annotate(f"#{body.index}", (state.position[i], state.position[j]), fontsize=7,
-                    xytext=(3, 3), textcoords="offset points")
-    for load in view.loads:
-        if load.vector is None or load.body is None or len(load.vector) < 3:
-            continue
-        body = view.body(load.body)
-        state = body.state_at(t) if body else None
-        if state is None or "Gravity" in load.kind:
-            continue
-        direction = np.asarray(load.vector[:3]) / (np.linalg.norm(load.vector[:3]) or 1.0) * 0.15 * size
-        ax.annotate("", (state.position[i] + direction[i], state.position[j] + direction[j]),
-                    (state.position[i], state.position[j]), arrowprops={"arrowstyle": "->", "color": "tab:brown"})
-    ax.set_xlabel(f"{_AXIS[i]} [m]", fontsize=7)
-    ax.set_ylabel(f"{_AXIS[j]} [m]", fontsize=7)
+def _panel(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection, low: np.ndarray, high: np.ndarray,
+           title: str) -> None:
+    draw_shapes(ax, shapes, projection)
+    ax.set_xlim(low[0], high[0])
+    ax.set_ylim(low[1], high[1])
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlabel(_axis_label(projection.right), fontsize=7)
+    ax.set_ylabel(_axis_label(projection.up), fontsize=7)
+    if not _axis_label(projection.right):
+        ax.set_xticks([])
+        ax.set_yticks([])
+        _triad(ax, projection)
     ax.tick_params(labelsize=6)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.autoscale_view()
-
-
-def _hull(points: np.ndarray) -> np.ndarray:
-    """Convex hull of 2D points (monotone chain): the outline of a projected box."""
-    pts = sorted({(round(float(x), 12), round(float(y), 12)) for x, y in points})
-    if len(pts) < 3:
-        return np.asarray(pts + pts[:1])
-
-    def cross(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower: list[tuple[float, float]] = []
-    upper: list[tuple[float, float]] = []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return np.asarray(lower[:-1] + upper[:-1])
-
-
-def _draw_3d(ax: plt.Axes, view: SystemView, k: int, size: float) -> None:
-    t = view.times[k] if view.times else 0.0
-    markers = _markers(view, k)
-    for c in view.connectors:
-        points = _connector_points(c, markers)
-        if len(points) == 2 and c.kind not in _JOINTS:
-            ax.plot(*np.asarray(points).T, "--" if c.kind == "DistanceConstraint" else "-",
-                    color=_COLORS.get(c.kind, "tab:gray"), lw=1)
-        elif points and c.kind in _JOINTS:
-            p = points[0]
-            ax.scatter(*p, color="tab:red", s=14)
-            if c.axis is not None and k == 0:
-                a = np.asarray(c.axis) * 0.12 * size
-                ax.plot(*np.asarray([p - a, p + a]).T, color="tab:red", lw=1.5)
-    for body in view.bodies:
-        state = body.state_at(t)
-        if state is None or len(state.position) < 3:
-            continue
-        corners = box_corners(body, state)
-        if body.is_ground:
-            ax.scatter(*state.position[:3], color="0.4", marker="s", s=30)
-        elif corners is not None:
-            ax.add_collection3d(Poly3DCollection([corners[list(f)] for f in _BOX_FACES], alpha=0.3,
-                                                 facecolor="tab:blue", edgecolor="navy", linewidths=0.3))
-        else:
-            ax.scatter(*state.position[:3], color="tab:blue", s=18)
-        ax.text(*state.position[:3], f"#{body.index}", fontsize=6)
-    ax.set_xlabel("x [m]", fontsize=7)
-    ax.set_ylabel("y [m]", fontsize=7)
-    ax.set_zlabel("z [m]", fontsize=7)
-    ax.tick_params(labelsize=5)
-    ax.view_init(elev=30.0, azim=-60.0)
-    _equal_3d(ax, view, k)
-
-
-def _equal_3d(ax: plt.Axes, view: SystemView, k: int) -> None:
-    t = view.times[k] if view.times else 0.0
-    points = [b.state_at(t).position[:3] for b in view.bodies if b.state_at(t) is not None]
-    points += [p[:3] for p in _markers(view, k).values() if len(p) >= 3]
-    if not points:
-        return
-    array = np.asarray(points, dtype=float)
-    centre = (array.max(axis=0) + array.min(axis=0)) / 2
-    half = max(float(np.ptp(array, axis=0).max()) / 2 * 1.15, 1e-3)
-    ax.set_xlim(centre[0] - half, centre[0] + half)
-    ax.set_ylim(centre[1] - half, centre[1] + half)
-    ax.set_zlim(centre[2] - half, centre[2] + half)
+    ax.set_title(title, fontsize=8)
 
 
 def draw(view: SystemView, times: Sequence[float], title: str = "") -> bytes:
-    """PNG bytes: one row per time (three orthogonal views and an isometric one)."""
-    size = _scene_size(view)
-    rows = [_sample_index(view, t) for t in times] or [0]
-    fig = plt.figure(figsize=(13, 3.3 * len(rows)), dpi=80)
-    for r, k in enumerate(rows):
-        t = view.times[k] if view.times else 0.0
-        for c, (name, axes) in enumerate(VIEWS):
-            ax = fig.add_subplot(len(rows), 4, r * 4 + c + 1)
-            _draw_2d(ax, view, k, axes, size)
-            ax.set_title(f"t = {num(t)} s — {name}", fontsize=8)
-        ax3 = fig.add_subplot(len(rows), 4, r * 4 + 4, projection="3d")
-        _draw_3d(ax3, view, k, size)
-        ax3.set_title(f"t = {num(t)} s — isometric", fontsize=8)
-    legend = ("blue: bodies (rigid bodies as inertia-equivalent boxes, mass points as dots), grey square: ground, "
-              "red: joints and their axes, green: springs, purple dashed: distance constraints, orange: contacts, "
-              "brown arrows: forces")
-    fig.suptitle((title + "\n" if title else "") + legend, fontsize=8)
+    """PNG bytes: one row per time, each with three orthogonal views and an isometric one."""
+    scenes = [build_scene(view, t) for t in times] or [build_scene(view, 0.0)]
+    stamps = [view.times[sample_index(view, t)] if view.times else 0.0 for t in times] or [0.0]
+    fig, grid = plt.subplots(len(scenes), len(VIEWS), figsize=(13, 3.3 * len(scenes)), dpi=80, squeeze=False)
+    for c, projection in enumerate(VIEWS):
+        low, high = bounds(scenes, projection)  # one scale per view: motion between the rows shows
+        for r, shapes in enumerate(scenes):
+            _panel(grid[r, c], shapes, projection, low, high, f"t = {num(stamps[r])} s — {projection.name}")
+    fig.suptitle((title + "\n" if title else "") + LEGEND, fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.93))
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png")
@@ -224,7 +114,7 @@ def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
     """The picture in words, for models that take no images."""
     lines = []
     for t in times:
-        k = _sample_index(view, t)
+        k = sample_index(view, t)
         at = view.times[k] if view.times else 0.0
         lines.append(f"at t = {num(at)} s:")
         shown = 0
@@ -242,11 +132,11 @@ def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
                 long_axis = state.rotation @ body.principal_axes[:, int(np.argmax(half))]
                 shape = (f"a box {' x '.join(num(2 * h) for h in half)} m, longest edge along {vec(long_axis)}")
             lines.append(f"  {body.label} at {vec(state.position)}: {shape}")
-        markers = _markers(view, k)
+        markers = view.marker_states[k] if k < len(view.marker_states) else {}
         for c in view.connectors[:limit]:
-            points = _connector_points(c, markers)
+            points = [np.asarray(markers[m][:3]) for m in c.markers if m in markers and len(markers[m]) >= 3]
             axis = f", axis {vec(c.axis)}" if c.axis and k == 0 else ""
-            if (c.kind in _JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
+            if (c.kind in JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
                 lines.append(f"  {c.label} at {vec(points[0])}{axis}")
             elif len(points) == 2:
                 lines.append(f"  {c.label} from {vec(points[0])} to {vec(points[1])}")

@@ -152,10 +152,13 @@ def _principal_inertia(item: dict[str, Any]) -> tuple[tuple[float, ...] | None, 
         return None, None
     if len(inertia) == 1:  # RigidBody2D: one moment about z
         return inertia, None
-    if len(inertia) != 6:
+    if len(inertia) == 9:  # a flexible body's 3x3 matrix, also about its frame's origin
+        tensor = np.asarray(inertia).reshape(3, 3)
+    elif len(inertia) == 6:
+        xx, yy, zz, yz, xz, xy = inertia
+        tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+    else:
         return None, None
-    xx, yy, zz, yz, xz, xy = inertia
-    tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
     c = np.asarray(_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3]
     tensor = tensor - float(mass) * (float(c @ c) * _E - np.outer(c, c))
     values, axes = np.linalg.eigh(tensor)
@@ -169,14 +172,23 @@ def _rotation(value: Any) -> np.ndarray | None:
     return np.asarray(flat).reshape(3, 3)
 
 
-def _states(index: int, inspection: dict[str, Any]) -> tuple[BodyState, ...]:
+def _states(index: int, inspection: dict[str, Any], frame_to_centre: tuple[float, ...] | None = None
+            ) -> tuple[BodyState, ...]:
+    """The body's sampled states; ``frame_to_centre`` (body coordinates) moves a state read at a
+    flexible body's floating frame to its centre of mass."""
     out = []
     for sample in inspection.get("states", []):
         raw = sample.get("bodies", {}).get(str(index))
         if not raw or _tuple(raw.get("p")) is None:
             continue
-        out.append(BodyState(float(sample["t"]), _tuple(raw["p"]) or (), _rotation(raw.get("R")),
-                             _tuple(raw.get("v")), _tuple(raw.get("w"))))
+        position, rotation = np.asarray(_tuple(raw["p"])), _rotation(raw.get("R"))
+        velocity, omega = _tuple(raw.get("v")), _tuple(raw.get("w"))
+        if frame_to_centre is not None and rotation is not None and len(position) == 3:
+            arm = rotation @ np.asarray(frame_to_centre)
+            position = position + arm
+            if velocity is not None and omega is not None:
+                velocity = tuple(float(x) for x in np.asarray(velocity) + np.cross(omega, arm))
+        out.append(BodyState(float(sample["t"]), tuple(float(x) for x in position), rotation, velocity, omega))
     return tuple(out)
 
 
@@ -329,12 +341,13 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
                 node_body.setdefault(int(node), index)
             mass = item.get("mass", item.get("physicsMass"))
             principal, axes = _principal_inertia(item)
+            to_centre = _tuple(item.get("centerOfMass")) if kind == "FlexibleBody" else None
             bodies.append(Body(
                 index, kind, str(item.get("objectType")), _name(item),
                 float(mass) if isinstance(mass, int | float) else None,
                 (_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3], principal,
                 int(node) if isinstance(node, int | float) else None, principal_axes=axes,
-                states=_states(index, inspection)))
+                states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
             connectors.append(_connector(index, item, markers, node_body, marker_t0))
