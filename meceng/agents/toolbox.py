@@ -42,7 +42,8 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
             "bodies": {"type": "array", "items": {"type": "integer"},
                        "description": "object numbers (#n) of the bodies to show in full, with their connectors"},
             "times": {"type": "array", "items": {"type": "number"},
-                      "description": "times (s) at which to report the states (default: four evenly spaced)"},
+                      "description": "times (s) at which to report the states (default: half the end time "
+                                     "and the end time; at most eight)"},
             "quantities": {"type": "array", "items": {"type": "string", "enum": list(QUANTITIES)},
                            "description": "which states to report (default: all)"}},
             "required": ["code"]},
@@ -247,7 +248,7 @@ class Toolbox:
 
     async def simulate(self, code: str, ask: Ask | None = None, times: tuple[float, ...] = ()) -> str:
         end = self._end_time()
-        run = await self._run(code, inspect_times=_clip(times, end) or tuple(end * k / 4 for k in range(1, 5)))
+        run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
         if run.items is None:
             return json.dumps({"stage": run.stage, "error": _trim(run.error)})
         view = build_view(run.items, run.system, run.inspection, run.trajectory)

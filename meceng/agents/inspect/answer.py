@@ -131,8 +131,14 @@ def render(view: SystemView, stage: str, error: str | None, ask: Ask | None = No
     shown = [b for b in movers if not ask.focused or b.index in ask.bodies]
     hint = "call again with bodies=[#numbers] to see those bodies"
     lines.append("bodies at t = 0:")
-    lines += _cut([f"  {_body_line(b, ask)}" for b in shown], len(shown) if ask.focused else ask.max_items,
-                  "bodies", hint)
+    limit = len(shown) if ask.focused else ask.max_items
+    lines += [f"  {_body_line(b, ask)}" for b in shown[:limit]]
+    if len(shown) > limit:
+        groups: dict[tuple[str, str], list[int]] = defaultdict(list)
+        for b in shown[limit:]:
+            groups[(b.kind, "?" if b.mass is None else num(b.mass))].append(b.index)
+        kinds = "; ".join(f"{len(n)} {kind} of mass {mass} ({_numbers(n)})" for (kind, mass), n in groups.items())
+        lines.append(f"  … {len(shown) - limit} more bodies not shown: {kinds}; {hint}")
     grounds = [b for b in view.bodies if b.is_ground]
     if grounds:
         lines.append("  ground: " + ", ".join(b.label for b in grounds))
@@ -141,6 +147,17 @@ def render(view: SystemView, stage: str, error: str | None, ask: Ask | None = No
     lines += _motion(view, shown, ask, end_time)
     lines += _ranges(view, shown, ask)
     return "\n".join(lines)
+
+
+def _numbers(indices: list[int]) -> str:
+    """#13–#25, #86: runs of object numbers folded."""
+    runs: list[list[int]] = []
+    for i in indices:
+        if runs and i == runs[-1][-1] + 1:
+            runs[-1].append(i)
+        else:
+            runs.append([i])
+    return ", ".join(f"#{r[0]}–#{r[-1]}" if len(r) > 2 else ", ".join(f"#{i}" for i in r) for r in runs)
 
 
 def _touches(c: Connector, ask: Ask) -> bool:
@@ -190,7 +207,7 @@ def _motion(view: SystemView, shown: list[Body], ask: Ask, end_time: float | Non
     times = [t for t in view.times if t > 0]
     if not times:
         return ["motion: no state after t = 0 (the solver did not advance)"]
-    bodies = shown if ask.focused else shown[: max(1, min(len(shown), 24 // max(len(times), 1)))]
+    bodies = shown if ask.focused else shown[: max(1, min(len(shown), ask.max_items // max(len(times), 1)))]
     out = ["motion (sampled):"]
     for t in times:
         for body in bodies:

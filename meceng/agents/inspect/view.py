@@ -17,7 +17,7 @@ from scipy.spatial.transform import Rotation
 
 from meceng.agents.inspect.names import BODY_KINDS, load_name, object_name
 
-ANGLES = "angles [rx, ry, rz] in rad with R = Rx(rx)·Ry(ry)·Rz(rz) (Tait-Bryan x-y'-z'', Exudyn's RotXYZ)"
+ANGLES = "angles (rx, ry, rz) in rad, R = Rx(rx)·Ry(ry)·Rz(rz) (Tait-Bryan x-y'-z'')"
 
 #: Item keys that are bookkeeping, not physics; left out of a connector's parameters.
 _NOT_PARAMETERS = frozenset({"objectType", "name", "markerNumbers", "activeConnector", "nodeNumber", "nodeNumbers",
@@ -257,22 +257,25 @@ def _semantics(exudyn_type: str, item: dict[str, Any], frame: np.ndarray | None,
         derived["initial_length"] = float(np.linalg.norm(np.subtract(points[1], points[0])))
     if exudyn_type == "JointRevoluteZ":
         axis = _direction(frame, 2)
-        return axis, f"rotation about {_fmt(axis)}", "all translations, the two other rotations", derived
+        return axis, f"rotation about {_fmt(axis)}", "all translations and the other rotations", derived
     if exudyn_type == "JointPrismaticX":
         axis = _direction(frame, 0)
-        return axis, f"translation along {_fmt(axis)}", "the other translations, all rotations", derived
+        return axis, f"translation along {_fmt(axis)}", "the other translations and all rotations", derived
     if exudyn_type == "ConnectorTorsionalSpringDamper":
         return _direction(frame, 2), "", "", derived
     if exudyn_type in ("JointSpherical", "JointGeneric"):
         flags = [int(x) for x in np.ravel(item.get("constrainedAxes") or [])]
-        names = ("translation", "translation", "translation", "rotation", "rotation", "rotation")
-        locked, free = [], []
+        groups: dict[tuple[bool, bool], list[str]] = {}
         for k, flag in enumerate(flags[:6]):
             direction = _direction(frame, k % 3) if frame is not None else tuple(float(x) for x in _E[k % 3])
-            (locked if flag else free).append(f"{names[k]} {'along' if k < 3 else 'about'} {_fmt(direction)}")
-        if exudyn_type == "JointSpherical":
-            free.append("all rotations")
-        return None, ", ".join(free) or "nothing", ", ".join(locked) or "nothing", derived
+            groups.setdefault((bool(flag), k < 3), []).append(_fmt(direction))
+
+        def said(flag: bool) -> list[str]:
+            return [f"{'translation along' if along else 'rotation about'} {', '.join(groups[(flag, along)])}"
+                    for along in (True, False) if groups.get((flag, along))]
+
+        free = said(False) + (["all rotations"] if exudyn_type == "JointSpherical" else [])
+        return None, "; ".join(free) or "nothing", "; ".join(said(True)) or "nothing", derived
     if exudyn_type == "JointRollingDisc":
         return _tuple(item.get("discAxis")), "rolling without slip", "", derived
     if exudyn_type == "ContactSphereSphere" and "initial_length" in derived:
@@ -286,7 +289,13 @@ _LENGTH_TYPES = frozenset({"ConnectorSpringDamper", "ConnectorDistance", "Contac
 
 
 def _fmt(vector: tuple[float, ...] | None) -> str:
-    return "?" if vector is None else "(" + ", ".join(f"{x:.4g}" for x in vector) + ")"
+    """A direction: the axis's name where it is a global axis (``-y``), else its components."""
+    if vector is None:
+        return "?"
+    for k, name in enumerate("xyz"):
+        if len(vector) == 3 and abs(abs(vector[k]) - 1.0) < 1e-9 and sum(abs(v) for v in vector) < 1.0 + 1e-9:
+            return ("-" if vector[k] < 0 else "") + name
+    return "(" + ", ".join(f"{x:.4g}" for x in vector) + ")"
 
 
 _NODE_COORDINATES = {
