@@ -176,3 +176,42 @@ async def test_a_vision_model_gets_the_snapshot_as_a_png(tmp_path: Path) -> None
     tool_entry = next(m for m in task["agent"]["transcript"] if m["role"] == "tool")
     assert tool_entry["images"][0].startswith("PNG, ") and "base64" not in json.dumps(task)[:0]
     assert task["overall"] is True
+
+
+async def test_bad_tool_arguments_are_answered_not_raised() -> None:
+    instance = default_registry().get("single_pendulum").instance(0)
+    toolbox = Toolbox(instance, rigid_catalog())
+    answer = (await toolbox.call("simulate", {"code": instance.reference_program, "times": ["soon"]})).text
+    assert "bad arguments for tool simulate" in answer
+    answer = (await toolbox.call("snapshot", {"code": instance.reference_program, "time": [1, 2]})).text
+    assert "picture in words" in answer  # a list of times: the first inside the run is taken
+    broken = (await toolbox.call("simulate", {"code": "import exudyn as exu\nraise ValueError('no')"})).text
+    assert json.loads(broken)["stage"] == "started" and "ValueError" in json.loads(broken)["error"]
+
+
+async def test_the_part_snapshot_shows_the_agents_part_and_its_interfaces() -> None:
+    from meceng.agents.catalog import part_catalog
+
+    part = default_registry().get("flexible_beam_part").instance(0)
+    other = re.sub(r"^beam_length = .*$", "beam_length = 0.3", part.reference_program, flags=re.M)
+    words = (await Toolbox(part, part_catalog()).call("snapshot", {"code": other})).text
+    assert "to (0.3, " in words and "interface 'right': centre (0.3, 0, 0), mean outward normal x" in words
+    picture = await Toolbox(part, part_catalog(), vision=True).call("snapshot", {"code": other})
+    assert base64.b64decode(picture.images[0]).startswith(b"\x89PNG")
+
+
+async def test_a_program_that_replaces_exudyns_enums_is_read_with_the_real_ones() -> None:
+    """The inspector reads the system with enums bound before the program ran: a program's own
+    object in their place is never touched (its code would run while the harness reads), so the
+    answer still has every body's state."""
+    instance = default_registry().get("single_pendulum").instance(0)
+    evil = instance.reference_program.replace("mbs.Assemble()", """
+class Sneaky:
+    def __getattr__(self, name):
+        raise RuntimeError('the harness touched the program object ' + name)
+exu.OutputVariableType = Sneaky()
+exu.ConfigurationType = Sneaky()
+mbs.Assemble()""")
+    assert evil != instance.reference_program
+    text = (await Toolbox(instance, rigid_catalog()).call("simulate", {"code": evil})).text
+    assert "stage: solved" in text and "position (" in text and "touched" not in text

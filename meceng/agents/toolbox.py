@@ -264,7 +264,7 @@ class Toolbox:
             text = pictures.describe_part(run.surface, interfaces)
         else:
             end = self._end_time()
-            at = _clip(_times([time]) if time is not None else (), end) or (end,)
+            at = _clip(_times(time), end)[:1] or (end,)
             run = await self._run(code, inspect_times=at)
             if run.items is None:
                 return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))

@@ -33,11 +33,10 @@ class InspectionRecorder:
     """Collects states of one system at t = 0 and at requested times."""
 
     def __init__(self, mbs: Any, api: dict[str, Any], times: list[float]) -> None:
-        import exudyn
-
         self.mbs = mbs
         self.api = api
-        self.out = exudyn.OutputVariableType
+        self.out = api["OutputVariableType"]  # bound before the program ran (it may replace exudyn's)
+        self.configurations = api["ConfigurationType"]
         self.pending = sorted(float(t) for t in times)
         self.states: list[dict[str, Any]] = []
         data = mbs.systemData
@@ -86,9 +85,7 @@ class InspectionRecorder:
         return state or None
 
     def take(self, t: float, initial: bool = False) -> None:
-        import exudyn
-
-        configuration = exudyn.ConfigurationType.Initial if initial else exudyn.ConfigurationType.Current
+        configuration = self.configurations.Initial if initial else self.configurations.Current
         bodies = {}
         for index, item in enumerate(self.objects):
             state = self._body_state(index, item, configuration)

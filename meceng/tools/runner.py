@@ -93,6 +93,8 @@ class Harness:
             "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter",
             "ComputeSystemDegreeOfFreedom", "GetObjectOutputBody", "GetNodeOutput", "GetMarkerOutput",
             "GetNodeODE2Index")})
+        # the inspector's enums, before the program could replace them with objects of its own
+        self.api.update(OutputVariableType=exu.OutputVariableType, ConfigurationType=exu.ConfigurationType)
         main_system.Assemble = assemble
         main_system.SetPostStepUserFunction = set_post_step
         import exudyn.solver as solver
@@ -291,12 +293,15 @@ def start_inspection(harness: Harness, times: list[float], result: dict[str, Any
     from meceng.tools.inspection import InspectionRecorder
 
     try:
+        harness.guard(True)  # the system is the program's: read it under the same guard
         recorder = InspectionRecorder(harness.mbs, harness.api, list(times))
         recorder.take(0.0, initial=True)
         return recorder
     except Exception as exc:
         result.setdefault("warnings", []).append(f"model inspector unavailable: {exc}")
         return None
+    finally:
+        harness.guard(False)
 
 
 def describe_exception(exc: BaseException, workdir: Path, program: str) -> dict[str, Any]:

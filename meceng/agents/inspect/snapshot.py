@@ -35,7 +35,7 @@ from meceng.agents.inspect.scene import (
     hull,
     sample_index,
 )
-from meceng.agents.inspect.view import SystemView
+from meceng.agents.inspect.view import SystemView, direction
 
 _AXIS_NAMES = "xyz"
 
@@ -199,5 +199,6 @@ def describe_part(surface: tuple[np.ndarray, np.ndarray], interfaces: dict[str, 
     for label, data in interfaces.items():
         if data:
             lines.append(f"  interface '{label}': centre {vec(data.get('centre'))}, mean outward normal "
-                         f"{vec(data.get('mean_normal'))}, area {num(float(data.get('area') or 0.0))} m²")
+                         f"{direction(data.get('mean_normal'))}, area {num(float(data.get('area') or 0.0))} m², "
+                         f"{data.get('geometry_faces')} geometry face(s)")
     return "\n".join(lines)

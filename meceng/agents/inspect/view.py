@@ -257,18 +257,18 @@ def _semantics(exudyn_type: str, item: dict[str, Any], frame: np.ndarray | None,
         derived["initial_length"] = float(np.linalg.norm(np.subtract(points[1], points[0])))
     if exudyn_type == "JointRevoluteZ":
         axis = _direction(frame, 2)
-        return axis, f"rotation about {_fmt(axis)}", "all translations and the other rotations", derived
+        return axis, f"rotation about {direction(axis)}", "all translations and the other rotations", derived
     if exudyn_type == "JointPrismaticX":
         axis = _direction(frame, 0)
-        return axis, f"translation along {_fmt(axis)}", "the other translations and all rotations", derived
+        return axis, f"translation along {direction(axis)}", "the other translations and all rotations", derived
     if exudyn_type == "ConnectorTorsionalSpringDamper":
         return _direction(frame, 2), "", "", derived
     if exudyn_type in ("JointSpherical", "JointGeneric"):
         flags = [int(x) for x in np.ravel(item.get("constrainedAxes") or [])]
         groups: dict[tuple[bool, bool], list[str]] = {}
         for k, flag in enumerate(flags[:6]):
-            direction = _direction(frame, k % 3) if frame is not None else tuple(float(x) for x in _E[k % 3])
-            groups.setdefault((bool(flag), k < 3), []).append(_fmt(direction))
+            axis = _direction(frame, k % 3) if frame is not None else tuple(float(x) for x in _E[k % 3])
+            groups.setdefault((bool(flag), k < 3), []).append(direction(axis))
 
         def said(flag: bool) -> list[str]:
             return [f"{'translation along' if along else 'rotation about'} {', '.join(groups[(flag, along)])}"
@@ -288,12 +288,12 @@ _LENGTH_TYPES = frozenset({"ConnectorSpringDamper", "ConnectorDistance", "Contac
                           "ConnectorCartesianSpringDamper"})
 
 
-def _fmt(vector: tuple[float, ...] | None) -> str:
+def direction(vector: tuple[float, ...] | list[float] | None) -> str:
     """A direction: the axis's name where it is a global axis (``-y``), else its components."""
     if vector is None:
         return "?"
     for k, name in enumerate("xyz"):
-        if len(vector) == 3 and abs(abs(vector[k]) - 1.0) < 1e-9 and sum(abs(v) for v in vector) < 1.0 + 1e-9:
+        if len(vector) == 3 and abs(abs(vector[k]) - 1.0) < 1e-6 and sum(abs(v) for v in vector) < 1.0 + 1e-6:
             return ("-" if vector[k] < 0 else "") + name
     return "(" + ", ".join(f"{x:.4g}" for x in vector) + ")"
 
