@@ -314,6 +314,77 @@ WITHOUT_PICTURES = {
 }
 
 
+def png_size(data: str) -> tuple[int, int]:
+    """Width and height from a base64 PNG's IHDR (the fakes have checked its signature)."""
+    import struct
+
+    raw = base64.b64decode(data)
+    return struct.unpack(">II", raw[16:24])
+
+
+def snapshot_script(known: dict[str, Any], backend_name: str) -> Any:
+    """A vision model's answers: the components, then a ``snapshot`` of the reference program, then
+    (once the tool has answered) the reference program."""
+    def answer(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        purpose, gold = gold_answer(known, body)
+        program = next(inst for desc, inst in known.items() if desc in prompt_of(body)).reference_program
+        answered = any(m["role"] == "tool" for m in body["messages"]) or len(body["messages"]) > 1
+        if backend_name == "anthropic":
+            if purpose == "code" and not answered:
+                return 200, anthropic_reply(tool_uses=({"id": "toolu_01", "name": "snapshot",
+                                                        "input": {"code": program}},), stop_reason="tool_use"), {}
+            return 200, anthropic_reply(gold), {}
+        reply = openai_reply(gold) if backend_name == "openai" else chat_reply(gold)
+        if purpose == "code" and not answered:
+            message = reply["choices"][0]["message"] if backend_name == "openai" else reply["message"]
+            call: dict[str, Any] = {"function": {"name": "snapshot", "arguments": {"code": program}}}
+            if backend_name == "openai":
+                call = {"id": "call_1", "type": "function",
+                        "function": {"name": "snapshot", "arguments": json.dumps({"code": program})}}
+            message["content"], message["tool_calls"] = "", [call]
+        return 200, reply, {}
+    return answer
+
+
+def picture_sent(backend_name: str, body: dict[str, Any]) -> str:
+    """The one picture of the request after the snapshot, from where each API carries it."""
+    messages = body["messages"]
+    if backend_name == "anthropic":
+        (result,) = messages[-1]["content"]
+        (image,) = [b for b in result["content"] if b["type"] == "image"]
+        assert result["tool_use_id"] == "toolu_01" and image["source"]["media_type"] == "image/png"
+        return str(image["source"]["data"])
+    assert [m["role"] for m in messages[-2:]] == ["tool", "user"]
+    if backend_name == "openai":
+        (url,) = [part["image_url"]["url"] for part in messages[-1]["content"] if part["type"] == "image_url"]
+        assert url.startswith("data:image/png;base64,")
+        return str(url.removeprefix("data:image/png;base64,"))
+    (image,) = messages[-1]["images"]
+    return str(image)
+
+
+async def test_cli_vision_run_sends_the_snapshot_to_all_three_apis(tmp_path: Path) -> None:
+    """``meceng run --agent loop --vision`` as a user starts it: the model asks for a snapshot and
+    the tool's PNG reaches the fake Anthropic, OpenAI and Ollama servers in each one's form (which
+    the fakes check as the real APIs do)."""
+    known = instances(("single_pendulum",))
+    async with (FakeAnthropic(snapshot_script(known, "anthropic"), key=SENTINEL) as claude,
+                FakeOllama(snapshot_script(known, "openai")) as gpt,
+                FakeOllama(snapshot_script(known, "ollama")) as local):
+        ran = await asyncio.gather(*(
+            cli_run(tmp_path, name, name, url, "--agent", "loop", "--vision", only="single_pendulum")
+            for name, url in (("anthropic", claude.url), ("openai", gpt.url + "/v1"), ("ollama", local.url))))
+    for (code, output), (name, server) in zip(ran, (("anthropic", claude), ("openai", gpt), ("ollama", local)),
+                                              strict=True):
+        assert code == 0, output
+        run = json.loads((tmp_path / name / "run.json").read_text())
+        task = run["tasks"][0]
+        assert run["settings"]["llm"]["vision"] is True and task["overall"] is True, output
+        assert task["agent"]["tool_calls"] == {"snapshot": 1}
+        width, height = png_size(picture_sent(name, server.requests[-1]))
+        assert width >= 200 and height >= 200  # the drawing, not a placeholder
+
+
 @pytest.mark.parametrize("backend_name", ["anthropic", "openai", "ollama"])
 async def test_a_conversation_without_pictures_is_sent_as_before(backend_name: str) -> None:
     sent = await sent_messages(backend_name, conversation(pictures=False))
