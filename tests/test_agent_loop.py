@@ -214,11 +214,11 @@ async def test_mesh_part_reports_the_agents_part_never_the_ground_truth() -> Non
     report = json.loads((await Toolbox(part, part_catalog()).call("mesh_part", {"code": other})).text)
     assert report["error"] is None and report["stage"] == "reduced"
     volume = 0.3 * p["beam_width"] * p["beam_height"]
-    assert report["volume"] == pytest.approx(volume, rel=1e-9)
-    assert report["mass"] == pytest.approx(2700.0 * volume, rel=1e-9)
+    assert report["volume"] == pytest.approx(volume, rel=1e-5)
+    assert report["mass"] == pytest.approx(2700.0 * volume, rel=1e-5)
     assert report["bounding_box"][1][0] == pytest.approx(0.3)
     right = report["interfaces"]["right"]
-    assert right["area"] == pytest.approx(p["beam_width"] * p["beam_height"], rel=1e-9)
+    assert right["area"] == pytest.approx(p["beam_width"] * p["beam_height"], rel=1e-5)
     assert right["centre"] == pytest.approx([0.3, 0.0, 0.0], abs=1e-9)
     assert right["mean_normal"] == pytest.approx([1.0, 0.0, 0.0], abs=1e-9)
     assert right["geometry_faces"] == 1 and right["surface_triangles"] >= 2

@@ -226,7 +226,7 @@ class Toolbox:
                 interfaces=geometry.get("interfaces") or {n: None for n in part["interfaces"]},
                 eigenfrequencies_hz=[round(f, 4) for f in part["eigenfrequencies"][:8]],
                 eigenfrequencies_are=FREQUENCIES_NOTE, nodes=part["nodes"])
-        return report
+        return _rounded(report)
 
     async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None
                    ) -> Execution:
@@ -331,6 +331,17 @@ def _node_positions(items: dict[str, list[dict[str, Any]]]) -> list[list[float]]
         if len(ref) >= 3 and "Ground" not in str(node.get("nodeType", "")):
             out.append([float(r) + float(i) for r, i in zip(ref[:3], ini[:3], strict=False)])
     return out
+
+
+def _rounded(value: Any) -> Any:
+    """Six significant digits; round-off (below 1e-12) as 0: numbers a model reads, not noise."""
+    if isinstance(value, float):
+        return 0.0 if abs(value) < 1e-12 else float(f"{value:.6g}")
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_rounded(v) for v in value]
+    return value
 
 
 def _ask(arguments: dict[str, Any]) -> Ask:
