@@ -367,12 +367,13 @@ async def test_cli_vision_run_sends_the_snapshot_to_all_three_apis(tmp_path: Pat
     """``meceng run --agent loop --vision`` as a user starts it: the model asks for a snapshot and
     the tool's PNG reaches the fake Anthropic, OpenAI and Ollama servers in each one's form (which
     the fakes check as the real APIs do)."""
-    known = instances(("single_pendulum",))
+    held_out = "four_bar_mechanism_rigid_bodies"  # three bodies, none of the inspector's own test tasks
+    known = instances((held_out,))
     async with (FakeAnthropic(snapshot_script(known, "anthropic"), key=SENTINEL) as claude,
                 FakeOllama(snapshot_script(known, "openai")) as gpt,
                 FakeOllama(snapshot_script(known, "ollama")) as local):
         ran = await asyncio.gather(*(
-            cli_run(tmp_path, name, name, url, "--agent", "loop", "--vision", only="single_pendulum")
+            cli_run(tmp_path, name, name, url, "--agent", "loop", "--vision", only=held_out)
             for name, url in (("anthropic", claude.url), ("openai", gpt.url + "/v1"), ("ollama", local.url))))
     for (code, output), (name, server) in zip(ran, (("anthropic", claude), ("openai", gpt), ("ollama", local)),
                                               strict=True):
