@@ -74,9 +74,11 @@ async def run_agent(
     template: str = DEFAULT_CODE,
     max_rounds: int = 6,
     token_budget: int = 30000,
+    prompt: str | None = None,
 ) -> AgentResult:
+    """``prompt`` replaces the template's question (a repair task's); the tools' note follows it."""
     note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + note
+    prompt = (prompt or code_prompt(template, instance.description, catalog.context(selection.names))) + note
     messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None

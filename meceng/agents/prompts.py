@@ -225,6 +225,22 @@ def code_prompt(template: str, description: str, context: str) -> str:
     return templates[template].format(description=description, context=context)
 
 
+REPAIR_NOTE = """
+The following program was written for this task. It contains a modelling error: the system it builds
+differs from the description in one respect. Find the error, fix it, and give the whole corrected
+program in a single ```python code block.
+
+```python
+{draft}
+```
+"""
+
+
+def repair_prompt(template: str, description: str, context: str, draft: str) -> str:
+    """The repair benchmark's question: the task's code prompt, then the faulty program."""
+    return code_prompt(template, description, context) + REPAIR_NOTE.format(draft=draft.rstrip())
+
+
 def gold_selection(names: tuple[str, ...] | list[str]) -> str:
     lines = "".join(f"<component>{n}</component>\n" for n in names)
     return f"<components>\n{lines}</components>"

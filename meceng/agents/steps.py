@@ -47,6 +47,11 @@ class Generation:
                 "infrastructure_error": self.infrastructure_error, "meta": self.meta}
 
 
+def given_selection(instance: TaskInstance) -> Selection:
+    """A repair task's components: those the draft already uses (no request is made)."""
+    return Selection(prompt="", answer="", names=instance.required_components, meta={"given": True})
+
+
 async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None]:
     try:
         return await backend.chat(request), None
@@ -69,9 +74,11 @@ async def choose_components(
 
 
 async def generate_code(
-    backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1"
+    backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1",
+    prompt: str | None = None,
 ) -> Generation:
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names))
+    """The code request; ``prompt`` replaces the template's (a repair task's question)."""
+    prompt = prompt or code_prompt(template, instance.description, catalog.context(selection.names))
     request = ChatRequest(user_messages(prompt), "code", instance.key,
                           gold=gold_code(instance.reference_program))
     response, failure = await _ask(backend, request)

@@ -1,4 +1,4 @@
-"""Command line: ``meceng tasks|evaluate|run|report|view|rescore``.
+"""Command line: ``meceng tasks|evaluate|drafts|run|report|view|rescore``.
 
 Exit codes: 0 success, 1 the graded program failed (``evaluate``), 2 wrong usage or unknown task.
 """
@@ -12,6 +12,7 @@ from typing import Any
 
 from meceng.cli.arguments import LEVELS, add_run_arguments, parse_levels, parse_think, positive_int
 from meceng.cli.commands import (
+    cmd_drafts,
     cmd_evaluate,
     cmd_report,
     cmd_rescore,
@@ -71,6 +72,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--timeout", type=float, default=60.0)
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_evaluate)
+
+    p = sub.add_parser("drafts", help="an instance's repair drafts: its ground truth with one seeded fault each")
+    p.add_argument("slug", help="task slug or paper id")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--json", action="store_true", help="every draft with its program and the grader's verdict")
+    p.set_defaults(func=cmd_drafts)
 
     p = sub.add_parser("report", help="HTML, Markdown and PNG report from runs")
     p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")

@@ -86,8 +86,13 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="fork: warm fork server (default); subprocess: a cold interpreter per program")
-    parser.add_argument("--agent", choices=("pipeline", "loop"), default="pipeline",
-                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs")
+    parser.add_argument("--agent", choices=("pipeline", "loop", "repair"), default="pipeline",
+                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs; "
+                             "repair: the repair benchmark (find and fix the seeded fault of a draft)")
+    parser.add_argument("--tools", choices=("on", "off"), default="on",
+                        help="--agent repair: with the agent's tools (simulate, snapshot, ...) or a single answer")
+    parser.add_argument("--drafts-per-task", type=positive_int, default=1,
+                        help="--agent repair: failing drafts per task instance")
     parser.add_argument("--max-rounds", type=positive_int, default=6, help="model calls per task in --agent loop")
     parser.add_argument("--token-budget", type=positive_int, default=30000,
                         help="completion tokens per task in --agent loop")
@@ -135,6 +140,7 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,
         progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
+        repair_tools=args.tools == "on", drafts_per_task=args.drafts_per_task,
         token_budget=args.token_budget,
     )
 

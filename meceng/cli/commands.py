@@ -89,6 +89,28 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
     return 0 if verdict.overall else 1
 
 
+def cmd_drafts(args: argparse.Namespace) -> int:
+    from meceng.pipeline.drafts import drafts_of
+
+    instance = _instance(args)
+    if instance.kind == "assembly":
+        print(f"error: {instance.slug} is an assembly: drafts exist for levels 1, 2 and 3a", file=sys.stderr)
+        return 2
+    graded = asyncio.run(drafts_of(instance))
+    if args.json:
+        print(json.dumps({"task": instance.slug, "seed": instance.seed,
+                          "drafts": [g.to_json() for g in graded]}, indent=1))
+        return 0
+    print(f"{instance.slug}@{instance.seed}: {len(graded)} drafts, {sum(g.fails for g in graded)} fail the grader")
+    for g in graded:
+        verdict = (f"fails at {g.first_failure}" + (f" ({', '.join(g.categories)})" if g.categories else "")
+                   if g.fails else "passes (not used)")
+        agree = "" if not g.fails else "  label = grader" if g.agrees else "  LABEL ≠ GRADER"
+        print(f"- {g.draft.id:<18} [{g.draft.label}] line {g.draft.line}: {g.draft.fault}\n"
+              f"  {verdict}{agree}")
+    return 0
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from meceng.logs import configure_logging
     from meceng.pipeline import run_benchmark

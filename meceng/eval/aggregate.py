@@ -71,6 +71,20 @@ def agent_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
     }
 
 
+def repair_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """The repair benchmark: drafts repaired, per fault label (the paper's category, or a part's fault)."""
+    drafts = [r for r in records if r.get("repair") and r.get("first_failure") != "infrastructure"]
+    if not drafts:
+        return None
+    by_label: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for r in drafts:
+        by_label[r["repair"]["label"]][0] += bool(r["repair"]["repaired"])
+        by_label[r["repair"]["label"]][1] += 1
+    return {"tasks": len(drafts), "repaired": sum(1 for r in drafts if r["repair"]["repaired"]),
+            "tools": bool(drafts[0]["repair"]["tools"]), "by_label": dict(sorted(by_label.items())),
+            "grader_agrees_with_label": sum(1 for r in drafts if (r["repair"].get("graded") or {}).get("agrees"))}
+
+
 def token_totals(records: Iterable[dict[str, Any]]) -> dict[str, int]:
     """Prompt, completion and reasoning tokens of all the records' LLM calls (reasoning is part of
     completion, as the APIs bill it)."""
@@ -114,6 +128,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
             "context_limit_hits": sum(1 for c in calls if c.get("context_limit_hit")),
         },
         "agent": agent_summary(records),
+        "repair": repair_summary(records),
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

@@ -26,6 +26,7 @@ from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import ExecutionLimits, child_env
 from meceng.tools.warm import WarmPool
 
+from .drafts import repair_instances
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
 from .records import failed_record
@@ -78,6 +79,9 @@ async def run_benchmark(
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
                           Tolerances(solution=settings.solution_tolerance), pool=pool,
                           part_timeout_s=settings.part_timeout_s)
+    if settings.agent == "repair":  # the tasks are the instances' failing drafts, graded before the first request
+        instances = await repair_instances(instances, evaluator, settings.drafts_per_task)
+        todo = [i for i in instances if i.key not in done_keys]
     ctx = FlowContext(backend, evaluator, settings, writer)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) * 2 + settings.workers + 2)
