@@ -302,12 +302,12 @@ def candidate_drafts(instance: TaskInstance) -> list[Draft]:
         edit, fault = made
         program = source[:edit.start] + edit.text + source[edit.end:]
         if program != source:
-            body, dropped = _without_header(program)
+            body, dropped = without_header(program)
             drafts.append(Draft(name, label, fault, body, edit.line - dropped))
     return drafts
 
 
-def _without_header(program: str) -> tuple[str, int]:
+def without_header(program: str) -> tuple[str, int]:
     """The program without the ground truth's leading comment block (it names itself the
     reference); returns the text and the number of lines dropped."""
     lines = program.splitlines(keepends=True)
