@@ -125,6 +125,12 @@ async def test_a_repair_run_resumes_by_draft(tmp_path: Path) -> None:
     assert sorted(f"{t['slug']}@{t['seed']}~{t['repair']['id']}" for t in again["tasks"]) == sorted(keys)
     assert again["resumed_tasks"] == 2
 
+    from meceng.pipeline.rescore import rescore
+
+    rescored = json.loads((await rescore(tmp_path / "r")).read_text())
+    assert [t["repair"]["repaired"] for t in rescored["tasks"]] == [True] * 4
+    assert rescored["summary"]["repair"]["repaired"] == 4
+
 
 def test_meceng_drafts_prints_labels_and_refuses_an_assembly() -> None:
     out = subprocess.run([sys.executable, "-m", "meceng", "drafts", "single_pendulum", "--seed", "1", "--json"],
