@@ -16,8 +16,8 @@ from typing import Any
 from meceng.agents.catalog import Catalog
 from meceng.agents.llm import Backend, ChatRequest, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
-from meceng.agents.prompts import DEFAULT_CODE, code_prompt, gold_code
-from meceng.agents.steps import Selection
+from meceng.agents.prompts import DEFAULT_CODE, gold_code
+from meceng.agents.steps import Selection, generation_prompt
 from meceng.agents.toolbox import Toolbox
 from meceng.tasks.base import TaskInstance
 
@@ -61,6 +61,12 @@ class AgentResult:
         }
 
 
+def agent_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str], template: str) -> str:
+    """The agent's first message: the code prompt with the note on its tools appended."""
+    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
+    return generation_prompt(instance, catalog, names, template) + note
+
+
 async def run_agent(
     backend: Backend,
     instance: TaskInstance,
@@ -72,8 +78,7 @@ async def run_agent(
     max_rounds: int = 6,
     token_budget: int = 30000,
 ) -> AgentResult:
-    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + note
+    prompt = agent_prompt(instance, catalog, selection.names, template)
     messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None

@@ -47,6 +47,19 @@ class Generation:
                 "infrastructure_error": self.infrastructure_error, "meta": self.meta}
 
 
+def selection_prompt(instance: TaskInstance, catalog: Catalog, template: str) -> str:
+    """The component-selection prompt a model gets for ``instance`` (the pipeline's and
+    ``meceng tasks prompt``'s one source)."""
+    return select_prompt(template, instance.description, catalog.menu())
+
+
+def generation_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str],
+                      template: str) -> str:
+    """The code prompt after the model chose ``names``: the description and the documentation of the
+    chosen components with their dependencies."""
+    return code_prompt(template, instance.description, catalog.context(names))
+
+
 async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None]:
     try:
         return await backend.chat(request), None
@@ -57,7 +70,7 @@ async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | N
 async def choose_components(
     backend: Backend, instance: TaskInstance, catalog: Catalog, template: str = "CI1"
 ) -> Selection:
-    prompt = select_prompt(template, instance.description, catalog.menu())
+    prompt = selection_prompt(instance, catalog, template)
     request = ChatRequest(user_messages(prompt), "select", instance.key,
                           gold=gold_selection(instance.required_components))
     response, failure = await _ask(backend, request)
@@ -71,7 +84,7 @@ async def choose_components(
 async def generate_code(
     backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1"
 ) -> Generation:
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names))
+    prompt = generation_prompt(instance, catalog, selection.names, template)
     request = ChatRequest(user_messages(prompt), "code", instance.key,
                           gold=gold_code(instance.reference_program))
     response, failure = await _ask(backend, request)
