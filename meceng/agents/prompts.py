@@ -51,7 +51,7 @@ Catalog (name: purpose):
 {menu}
 
 Instructions:
-1. Identify the bodies (mass points or rigid bodies) and how they are connected.
+1. Identify the bodies (mass points, rigid bodies or flexible parts) and how they are connected.
 2. Identify loads, contacts and constraints.
 3. Choose every catalog component needed for steps 1 and 2; do not invent names.
 Output format (nothing else):
