@@ -18,6 +18,10 @@ Measured on seed 1 unless said (norm = the solution difference, tolerance 1e-5):
 - how long the cylinder that cuts a through hole is (the wall thickness or longer; the Cylinder
   documentation allows both): the same solid -> accepted (bearing block and drilled beam; slow,
   they mesh).
+- a coordinate constraint written by hand with one ground node shared by all constraints (four-bar
+  of mass points, Pratt truss): another item graph (topology fails), the physics is the same ->
+  closed in the CoordinateConstraint documentation (one ground node per constraint, as
+  mbs.CreateCoordinateConstraint makes it); with its own ground node each, it passes.
 - GenericJoint or InterfaceJoint for a joint at a flexible part: the selection grades missing
   components only, so choosing both passes; choosing GenericJoint alone misses InterfaceJoint ->
   closed in the prompt: every assembly text names InterfaceJoint (tests/test_prompt_lint.py).
@@ -29,7 +33,7 @@ import re
 
 import pytest
 
-from meceng.agents.catalog import assembly_catalog
+from meceng.agents.catalog import assembly_catalog, rigid_catalog
 from meceng.eval.components import check_components
 from meceng.pipeline import evaluate_program
 from meceng.tasks.base import TaskInstance
@@ -76,6 +80,26 @@ async def test_the_ground_may_be_created_after_the_body_when_the_text_gives_no_o
     assert program != task.reference_program and "Create the ground" not in task.description
     verdict, _, _ = await evaluate_program(task, program)
     assert verdict.overall, [(s.name, s.detail) for s in verdict.stages]
+
+
+async def test_a_coordinate_constraint_written_by_hand_needs_its_own_ground_node() -> None:
+    """Closed in the CoordinateConstraint documentation: one NodePointGround per constraint is what
+    mbs.CreateCoordinateConstraint makes; one shared ground node is another item graph (topology)."""
+    task = instance("four_bar_mechanism_point_masses")
+    calls = ("mbs.CreateCoordinateConstraint(itemNumbers=[None, oB], coordinates=[None, 2])\n"
+             "mbs.CreateCoordinateConstraint(itemNumbers=[None, oC], coordinates=[None, 2])")
+    assert calls in task.reference_program
+    marker = "    mO = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=mbs.GetObject(o)['nodeNumber'], coordinate=2))\n"
+    ground = ("nG = mbs.AddNode(NodePointGround())\n"
+              "mG = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nG, coordinate=0))\n")
+    constraint = "    mbs.AddObject(CoordinateConstraint(markerNumbers=[mG, mO]))"
+    own = "for o in (oB, oC):\n" + "".join("    " + line + "\n" for line in ground.splitlines()) + marker + constraint
+    shared = ground + "for o in (oB, oC):\n" + marker + constraint
+    verdict, _, _ = await evaluate_program(task, task.reference_program.replace(calls, own))
+    assert verdict.overall, [(s.name, s.detail) for s in verdict.stages]
+    verdict, _, _ = await evaluate_program(task, task.reference_program.replace(calls, shared))
+    assert verdict.first_failure == "topology_match"
+    assert "do not share one NodePointGround" in " ".join(rigid_catalog().get("CoordinateConstraint").context.split())
 
 
 # --- assembly marker order: closed in the prompt ----------------------------------------------
