@@ -170,6 +170,14 @@ def test_the_naming_check_finds_an_unmapped_component() -> None:
     assert any("GenericJoint" in p for p in naming_problems(instance, bare))
 
 
+def test_a_text_without_a_ground_object_says_so() -> None:
+    """An unused ground object fails the topology (an inert surplus item), so a task whose ground
+    truth has none says so; the catalog's Ground text is in its prompt only if chosen."""
+    silent = [i.key for i in instances() if i.kind == "rigid" and "CreateGround(" not in i.reference_program
+              and not re.search(r"(?i)\bno ground\b", i.description)]
+    assert silent == []
+
+
 # --- calls shown in descriptions and catalogs -------------------------------------------------
 
 
