@@ -13,6 +13,9 @@ Measured on seed 1 unless said (norm = the solution difference, tolerance 1e-5):
   bench 8.9e-6, rotor bearings 2e-8 to 2.6e-6 (pass) -> closed in the prompt: every such text says
   "the first-named marker first" and names the sides in the ground truth's order (checked for every
   assembly below); a clamp or ground joint swapped changes the solution by 4e-13 to 1.4e-6.
+- which item of the RRR robot's PD drives (torsional spring-dampers) comes first: the measured
+  joint angle changes sign, the arm moves to the mirrored angles (norm 69.6) -> closed in the text,
+  which names the order (its revolute joints swapped pass).
 - where the ground is created when the text gives no order (single pendulum): graph and solution
   identical -> accepted.
 - how long the cylinder that cuts a through hole is (the wall thickness or longer; the Cylinder
@@ -102,6 +105,21 @@ async def test_a_coordinate_constraint_written_by_hand_needs_its_own_ground_node
     verdict, _, _ = await evaluate_program(task, task.reference_program.replace(calls, shared))
     assert verdict.first_failure == "topology_match"
     assert "do not share one NodePointGround" in " ".join(rigid_catalog().get("CoordinateConstraint").context.split())
+
+
+async def test_a_pd_joint_drive_with_its_items_swapped_is_another_model() -> None:
+    """The joint angle a torsional spring-damper measures is that of itemNumbers[1] relative to
+    itemNumbers[0] (JointPDControl), so swapping them drives the arm to the mirrored angles (RRR robot
+    seed 1: norm 69.6); the text names the order. Its revolute joints swapped still pass."""
+    task = instance("rrr_articulated_robot_with_3d_cubic_trajectory")
+    assert "the item named first, e.g. the ground for joint 1, is itemNumbers[0]" in task.description
+    program = task.reference_program
+    springs, joints = "mbs.CreateTorsionalSpringDamper(itemNumbers=items,", "mbs.CreateRevoluteJoint(itemNumbers=items,"
+    assert springs in program and joints in program
+    verdict, _, _ = await evaluate_program(task, program.replace(springs, springs.replace("items", "items[::-1]")))
+    assert verdict.first_failure == "solution_match"
+    verdict, _, _ = await evaluate_program(task, program.replace(joints, joints.replace("items", "items[::-1]")))
+    assert verdict.overall, [(s.name, s.detail) for s in verdict.stages]
 
 
 # --- assembly marker order: closed in the prompt ----------------------------------------------
