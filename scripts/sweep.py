@@ -69,6 +69,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--host", "--base-url", action="append", dest="host",
                    help="server URL (Ollama, or an OpenAI-compatible .../v1); repeat for several")
     p.add_argument("--api-defaults", action="store_true", help="send neither temperature nor seed (with --model)")
+    p.add_argument("--vision", action="store_true",
+                   help="the models take images: pictures for the agent loop (with --model; see meceng run --help)")
     p.add_argument("--temperature", action="append", type=parse_temperature,
                    help="a number, or 'default' for the model's own; repeatable")
     p.add_argument("--think", action="append", type=parse_think)
@@ -100,7 +102,7 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
         backend = args.backend or "ollama"
         hosts = tuple(args.host) if args.host else (DEFAULT_HOSTS[backend],)
         models = tuple(ModelSpec(name=m, backend="gold" if m == "gold" else backend, hosts=hosts,
-                                 batch_size=args.batch_size or 4,
+                                 batch_size=args.batch_size or 4, vision=args.vision,
                                  api_defaults=args.api_defaults or backend == "anthropic") for m in args.model)
     only = parse_only(args.only) if args.only else None
     changed = []

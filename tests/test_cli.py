@@ -98,6 +98,34 @@ def test_resume_on_another_server(tmp_path) -> None:
     assert moved.llm.temperature == 0.3 and moved.llm.model == "m:1b" and moved.resume
 
 
+def test_vision_is_a_run_setting_that_resume_keeps(tmp_path) -> None:
+    """--vision goes into the LLM settings, settings.json and back through --resume; a run folder
+    from before the setting existed resumes without it."""
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
+
+    parser = build_parser()
+    assert llm_settings(parser.parse_args(["run", "--model", "m:1b"])).vision is False
+    args = parser.parse_args(["run", "--model", "m:1b", "--vision", "--agent", "loop", "--out", str(tmp_path)])
+    written = run_settings(args, llm_settings(args)).to_json()
+    assert written["llm"]["vision"] is True
+    for name, saved in (("seeing", written), ("older", {**written, "llm": {
+            k: v for k, v in written["llm"].items() if k != "vision"}})):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "settings.json").write_text(json.dumps(saved))
+    assert resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "seeing")])).llm.vision is True
+    assert resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "older")])).llm.vision is False
+
+
+def test_gold_run_with_vision_records_it_and_ignores_it(tmp_path) -> None:
+    proc = meceng("run", "--model", "gold", "--vision", "--only", "3", "--variations", "1", "--out", str(tmp_path),
+                  "--name", "g", "--no-progress")
+    assert proc.returncode == 0, proc.stderr
+    run = json.loads((tmp_path / "g" / "run.json").read_text())
+    assert run["settings"]["llm"]["vision"] is True and run["summary"]["rates"]["overall"] == 1.0
+    assert json.loads((tmp_path / "g" / "settings.json").read_text())["llm"]["vision"] is True
+
+
 def test_a_temperature_the_api_will_not_get_is_refused(tmp_path) -> None:
     """--temperature with --api-defaults or Anthropic would be dropped silently: a clear error instead."""
     env = {**os.environ, "ANTHROPIC_API_KEY": "k", "OPENAI_API_KEY": "k"}

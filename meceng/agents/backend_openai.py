@@ -104,9 +104,12 @@ class OpenAIBackend(EndpointBackend):
 
 def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
     """The agent's conversation in OpenAI's form: calls with ids and JSON-string arguments,
-    results answering a ``tool_call_id``."""
+    results answering a ``tool_call_id``; a tool message takes text only, so its pictures follow
+    the turn's results in a user message of ``image_url`` parts (base64 data URLs)."""
+    from meceng.agents.llm import IMAGE_MEDIA_TYPE, pictures_after_tool_results
+
     wire = []
-    for message in messages:
+    for message in pictures_after_tool_results(messages):
         if message["role"] == "tool":
             wire.append({"role": "tool", "tool_call_id": message["tool_call_id"], "content": message["content"]})
         elif message["role"] == "assistant":
@@ -116,6 +119,11 @@ def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]
                                        "function": {"name": c["name"], "arguments": json.dumps(c["arguments"])}}
                                       for c in message["tool_calls"]]
             wire.append(turn)
+        elif message.get("images"):
+            wire.append({"role": message["role"], "content": [
+                {"type": "text", "text": message["content"]},
+                *({"type": "image_url", "image_url": {"url": f"data:{IMAGE_MEDIA_TYPE};base64,{image}"}}
+                  for image in message["images"])]})
         else:
             wire.append(message)
     return wire

@@ -23,17 +23,20 @@ from meceng.tasks.base import TaskInstance
 
 AGENT_NOTE = """
 You can call tools before you answer: `simulate(code)` runs a complete program and reports what it
-built and how it moved, `self_check(code)` looks for problems, `list_components()` and
-`component_docs(names)` give documentation. Test your program, repair it if needed, and then give
-the final program in a single ```python code block without calling a tool.
+built (every body, connector and load in global coordinates) and how it moved; `snapshot(code)`
+draws the system at t = 0 and at the end; `self_check(code)` looks for problems; `list_components()`
+and `component_docs(names)` give documentation. Test your program, compare what it built with the
+description, repair it if needed, and then give the final program in a single ```python code block
+without calling a tool.
 """
 
 PART_AGENT_NOTE = """
 You can call tools before you answer: `mesh_part(code)` builds, meshes and reduces a complete part
-program and reports its volume, mass, bounding box, interfaces (area and centre) and first
-eigenfrequencies; `list_components()` and `component_docs(names)` give documentation. Check the
-part against the description, repair it if needed, and then give the final program in a single
-```python code block without calling a tool.
+program and reports its volume, mass, bounding box, interfaces (area, centre, outward normal, faces)
+and the eigenfrequencies of its fixed-interface modes; `snapshot(code)` draws the part;
+`list_components()` and `component_docs(names)` give documentation. Check the part against the
+description, repair it if needed, and then give the final program in a single ```python code block
+without calling a tool.
 """
 
 
@@ -118,8 +121,11 @@ async def run_agent(
                 first_code = first_code or code
                 last_code = code
             result = await toolbox.call(call.name, call.arguments if isinstance(call.arguments, dict) else {})
-            messages.append(tool_message(call, result))
-            transcript.append({"role": "tool", "name": call.name, "content": result})
+            messages.append(tool_message(call, result.text, result.images))
+            entry = {"role": "tool", "name": call.name, "content": result.text}
+            if result.images:  # the record keeps the picture's size, not the picture
+                entry["images"] = [f"PNG, {len(image) * 3 // 4} bytes" for image in result.images]
+            transcript.append(entry)
         if completion >= token_budget:
             stop = "token_budget"
             break

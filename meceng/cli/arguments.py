@@ -69,6 +69,10 @@ def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--api-key-env", default=None, metavar="VARIABLE",
                         help="environment variable holding the API key (default OPENAI_API_KEY, "
                              "ANTHROPIC_API_KEY); the key itself is never written anywhere")
+    parser.add_argument("--vision", action="store_true",
+                        help="the model takes images: in --agent loop a picture of the program's system goes to "
+                             "it (Anthropic image blocks, OpenAI image_url parts, Ollama images) instead of a text "
+                             "description; the gold backend ignores it")
     parser.add_argument("--temperature", type=float, default=None, help="sampling temperature (default 0)")
     parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
     parser.add_argument("--think", type=parse_think, default=False, help="on/off or low/medium/high")
@@ -117,7 +121,7 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
         model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
         api_defaults=args.api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
         think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
-        batch_size=args.batch_size, timeout_s=args.llm_timeout,
+        batch_size=args.batch_size, timeout_s=args.llm_timeout, vision=args.vision,
     )
     if settings.api_defaults and args.temperature is not None:  # it would be dropped without a word
         why = ("Anthropic's API (version 2026-10-21) takes no sampling parameters" if backend == "anthropic"

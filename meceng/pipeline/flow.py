@@ -57,7 +57,8 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
                            selection=selection)
     agent = None
     if settings.agent == "loop":
-        toolbox = Toolbox(instance, kind.catalog, kind.limits, evaluator.pool, files=kind.files)
+        toolbox = Toolbox(instance, kind.catalog, kind.limits, evaluator.pool, files=kind.files,
+                          vision=settings.llm.vision)
         agent = await run_agent(ctx.backend, instance, kind.catalog, selection, toolbox, template=code_template,
                                 max_rounds=settings.max_rounds, token_budget=settings.token_budget)
         generation = agent_generation(agent)

@@ -169,8 +169,8 @@ def _chat(agent: dict[str, Any]) -> str:
 
 def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str | None,
               reference: str | None, file_links: dict[str, str], images: dict[str, str],
-              neighbours: tuple[str | None, str | None]) -> str:
-    """The whole page as one string (the caller writes it)."""
+              neighbours: tuple[str | None, str | None], system: str | None = None) -> str:
+    """The whole page as one string (the caller writes it); ``system`` is the pictures' HTML."""
     key = f"{record.get('origin') + '/' if record.get('origin') else ''}{record['slug']}@{record['seed']}"
     verdict = ("infrastructure failure (not counted)" if record.get("first_failure") == "infrastructure"
                else "passed" if record.get("overall") else f"failed at {record.get('first_failure')}")
@@ -195,6 +195,8 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
           "<h2 id='stages'>Stages</h2>", _stages(record)]
     if record.get("differences") or record.get("topology_causes"):
         s += ["<h2 id='differences'>Graph differences by error category</h2>", _differences(record)]
+    if system is not None:
+        s += ["<h2 id='system'>System: program vs ground truth</h2>", system]
     if "trajectory" in images:
         s += ["<h2 id='solution'>Numerical solution: program vs ground truth</h2>",
               "<p class='muted'>the coordinates that differ most; the full trajectories were resampled to ≤ 200 "
