@@ -170,6 +170,13 @@ GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
 
+def _only(value: Any) -> tuple[str, ...]:
+    """A spec's ``only``: task keys, each one a task model (a typo must not shrink a study)."""
+    only = tuple(str(x) for x in _tuple(value))
+    default_registry().check(only)
+    return only
+
+
 def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tuple[ModelSpec, ...]) -> Study:
     grid = {**defaults.get("grid", {}), **data.get("grid", {})}
     _check_keys(f"study {name} grid", grid, GRID_KEYS)
@@ -181,7 +188,7 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
         select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
         code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
         levels=tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"]))),
-        only=tuple(str(x) for x in _tuple(merged.get("only", []))),
+        only=_only(merged.get("only", [])),
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
         description=str(data.get("description", "")),
     )

@@ -29,6 +29,7 @@ from rich.table import Table
 
 from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
+from meceng.cli.arguments import parse_only
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.sweep import (
@@ -103,7 +104,7 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
         models = tuple(ModelSpec(name=m, backend="gold" if m == "gold" else backend, hosts=hosts,
                                  batch_size=args.batch_size or 4, vision=args.vision,
                                  api_defaults=args.api_defaults or backend == "anthropic") for m in args.model)
-    only = tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()) if args.only else None
+    only = parse_only(args.only) if args.only else None
     changed = []
     for study in studies:
         study_models = models

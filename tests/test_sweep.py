@@ -144,3 +144,12 @@ def test_two_studies_sharing_a_point_run_it_once(tmp_path: Path) -> None:
     assert proc.returncode == 0, proc.stderr
     runs = sorted(p.parent.name for p in (tmp_path / "runs").glob("*/run.json"))
     assert runs == ["gold_T0_think-False_CI1_MBS1_L1-2_v1_s0_only-3", "gold_T0_think-False_CI2_MBS1_L1-2_v1_s0_only-3"]
+
+
+def test_an_unknown_task_in_only_is_refused(tmp_path: Path) -> None:
+    proc = sweep("--model", "gold", "--only", "single_pendulum,no_such_task", "--dry-run", "--out", str(tmp_path))
+    assert proc.returncode == 2 and "'no_such_task'" in proc.stderr
+    spec = tmp_path / "typo.toml"
+    spec.write_text('only = ["newtons_cradel"]\n[[models]]\nname = "gold"\nbackend = "gold"\n')
+    with pytest.raises(ValueError, match="did you mean newtons_cradle"):
+        load_spec(spec)

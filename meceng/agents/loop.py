@@ -16,16 +16,17 @@ from typing import Any
 from meceng.agents.catalog import Catalog
 from meceng.agents.llm import Backend, ChatRequest, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
-from meceng.agents.prompts import DEFAULT_CODE, code_prompt, gold_code
-from meceng.agents.steps import Selection
+from meceng.agents.prompts import DEFAULT_CODE, gold_code
+from meceng.agents.steps import Selection, generation_prompt
 from meceng.agents.toolbox import Toolbox
 from meceng.tasks.base import TaskInstance
 
 AGENT_NOTE = """
 You can call tools before you answer: `simulate(code)` runs a complete program and reports what it
 built (every body, connector and load in global coordinates) and how it moved; `snapshot(code)`
-draws the system at t = 0 and at the end; `self_check(code)` looks for problems; `list_components()`
-and `component_docs(names)` give documentation. Test your program, compare what it built with the
+draws the system at t = 0 and at the end (the tool draws it: your program itself still has no
+visualization); `self_check(code)` looks for problems; `list_components()` and
+`component_docs(names)` give documentation. Test your program, compare what it built with the
 description, repair it if needed, and then give the final program in a single ```python code block
 without calling a tool.
 """
@@ -64,6 +65,14 @@ class AgentResult:
         }
 
 
+def agent_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str], template: str,
+                 question: str | None = None) -> str:
+    """The agent's first message: the code prompt (or ``question``, a repair task's) with the note
+    on its tools appended."""
+    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
+    return (question or generation_prompt(instance, catalog, names, template)) + note
+
+
 async def run_agent(
     backend: Backend,
     instance: TaskInstance,
@@ -77,8 +86,7 @@ async def run_agent(
     prompt: str | None = None,
 ) -> AgentResult:
     """``prompt`` replaces the template's question (a repair task's); the tools' note follows it."""
-    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
-    prompt = (prompt or code_prompt(template, instance.description, catalog.context(selection.names))) + note
+    prompt = agent_prompt(instance, catalog, selection.names, template, question=prompt)
     messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None

@@ -52,6 +52,19 @@ def given_selection(instance: TaskInstance) -> Selection:
     return Selection(prompt="", answer="", names=instance.required_components, meta={"given": True})
 
 
+def selection_prompt(instance: TaskInstance, catalog: Catalog, template: str) -> str:
+    """The component-selection prompt a model gets for ``instance`` (the pipeline's and
+    ``meceng tasks prompt``'s one source)."""
+    return select_prompt(template, instance.description, catalog.menu())
+
+
+def generation_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str],
+                      template: str) -> str:
+    """The code prompt after the model chose ``names``: the description and the documentation of the
+    chosen components with their dependencies."""
+    return code_prompt(template, instance.description, catalog.context(names))
+
+
 async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None]:
     try:
         return await backend.chat(request), None
@@ -62,7 +75,7 @@ async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | N
 async def choose_components(
     backend: Backend, instance: TaskInstance, catalog: Catalog, template: str = "CI1"
 ) -> Selection:
-    prompt = select_prompt(template, instance.description, catalog.menu())
+    prompt = selection_prompt(instance, catalog, template)
     request = ChatRequest(user_messages(prompt), "select", instance.key,
                           gold=gold_selection(instance.required_components))
     response, failure = await _ask(backend, request)
@@ -78,7 +91,7 @@ async def generate_code(
     prompt: str | None = None,
 ) -> Generation:
     """The code request; ``prompt`` replaces the template's (a repair task's question)."""
-    prompt = prompt or code_prompt(template, instance.description, catalog.context(selection.names))
+    prompt = prompt or generation_prompt(instance, catalog, selection.names, template)
     request = ChatRequest(user_messages(prompt), "code", instance.key,
                           gold=gold_code(instance.reference_program))
     response, failure = await _ask(backend, request)

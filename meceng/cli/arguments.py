@@ -27,6 +27,16 @@ def parse_levels(text: str) -> tuple[str, ...]:
     return levels
 
 
+def parse_only(values: list[str] | None) -> tuple[str, ...]:
+    """``--only`` given once or more, each comma-separated, as task keys; a key that names no task
+    model is refused here (``UnknownTaskError``, a ``ValueError``), before anything starts."""
+    from meceng.tasks.registry import default_registry
+
+    only = tuple(x.strip() for part in values or () for x in part.split(",") if x.strip())
+    default_registry().check(only)
+    return only
+
+
 def positive_int(text: str) -> int:
     value = int(text)
     if value < 1:
@@ -134,8 +144,9 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
     if args.code_template not in CODE_TEMPLATES:
         raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
                          f"choose from {', '.join(CODE_TEMPLATES)}")
+    only = parse_only(args.only)
     return RunSettings(
-        llm=llm, levels=args.levels, only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()),
+        llm=llm, levels=args.levels, only=only,
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,

@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
-from meceng.tasks.registry import default_registry
+from meceng.tasks.registry import UnknownTaskError, default_registry
 
 
 def cmd_tasks_list(args: argparse.Namespace) -> int:
@@ -36,8 +36,8 @@ def _instance(args: argparse.Namespace) -> Any:
     registry = default_registry()
     try:
         model = registry.get(args.slug)
-    except KeyError as exc:
-        print(f"error: {exc.args[0]}", file=sys.stderr)
+    except UnknownTaskError as exc:
+        print(f"error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
     return model.instance(args.seed)
 
@@ -57,6 +57,24 @@ def cmd_tasks_show(args: argparse.Namespace) -> int:
 
 def cmd_tasks_reference(args: argparse.Namespace) -> int:
     print(_instance(args).reference_program, end="")
+    return 0
+
+
+def cmd_tasks_prompt(args: argparse.Namespace) -> int:
+    """The prompts exactly as a run sends them (the code prompt as after choosing the required
+    components), each under a header line that is not part of it."""
+    from meceng.pipeline import RunSettings, instance_prompts
+
+    settings = RunSettings(select_template=args.select_template, code_template=args.code_template,
+                           agent=args.agent)
+    prompts = instance_prompts(_instance(args), settings)
+    if args.json:
+        print(json.dumps([vars(p) for p in prompts], indent=1))
+        return 0
+    for prompt in prompts:
+        what = "component selection" if prompt.stage == "select" else "program"
+        print(f"===== {prompt.key} ({prompt.kind}): {what} prompt, template {prompt.template} =====")
+        print(prompt.text.rstrip("\n") + "\n")
     return 0
 
 
