@@ -71,10 +71,11 @@ class OpenAIBackend(EndpointBackend):
             base_url=host.rstrip("/"), timeout=settings.timeout_s, headers=headers))
         self._overflow_told = False
 
-    async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
+    def request_body(self, host: str, request: ChatRequest) -> dict[str, Any]:
+        """The JSON body of one request to ``host``."""
         body: dict[str, Any] = {
             "model": self.settings.model, "messages": _wire_messages(request.messages), "stream": False,
-            **answer_limit_fields(endpoint.host, self.settings.num_predict),
+            **answer_limit_fields(host, self.settings.num_predict),
         }
         if not self.settings.api_defaults:
             body["temperature"] = self.settings.temperature
@@ -84,6 +85,10 @@ class OpenAIBackend(EndpointBackend):
             body["reasoning_effort"] = self.settings.think
         if request.tools:
             body["tools"] = [{"type": "function", "function": tool} for tool in request.tools]
+        return body
+
+    async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
+        body = self.request_body(endpoint.host, request)
         t0 = time.perf_counter()
         try:
             response = await endpoint.client.post("/chat/completions", json=body)
@@ -121,13 +126,19 @@ class OpenAIBackend(EndpointBackend):
             except ValueError:
                 arguments = {"_unparsed": function.get("arguments")}
             calls.append(ToolCall(name=function.get("name", ""), arguments=arguments, id=call.get("id", "")))
+        completion_tokens = int(usage.get("completion_tokens") or 0)
+        done_reason = choice.get("finish_reason")
+        if completion_tokens >= self.settings.num_predict:
+            # cut by the limit whatever the server calls it: llama-cpp-python says "tool_calls" for a
+            # forced call whose arguments the limit cut off mid-JSON
+            done_reason = "length"
         return ChatResponse(
             tool_calls=tuple(calls),
             content=message.get("content") or "",
             thinking=message.get("reasoning_content") or message.get("reasoning") or "",
-            done_reason=choice.get("finish_reason"),
+            done_reason=done_reason,
             prompt_tokens=int(usage.get("prompt_tokens") or 0),
-            completion_tokens=int(usage.get("completion_tokens") or 0),
+            completion_tokens=completion_tokens,
             reasoning_tokens=int((usage.get("completion_tokens_details") or {}).get("reasoning_tokens") or 0),
             total_duration_s=wall,
             wall_time_s=wall,
