@@ -160,6 +160,12 @@ class LlamaServer:
         self.kill()
         raise RuntimeError(f"llama_cpp.server did not answer within {timeout_s:.0f} s: {self.log_tail()}")
 
+    def freeze(self, frozen: bool = True) -> None:
+        """Stop (SIGSTOP) or continue the server: stopped, it still accepts connections (the kernel
+        does) and answers nothing, as a hung server does."""
+        assert self.proc is not None
+        os.killpg(self.proc.pid, signal.SIGSTOP if frozen else signal.SIGCONT)
+
     def kill(self) -> None:
         if self.proc is not None and self.proc.poll() is None:
             os.killpg(self.proc.pid, signal.SIGKILL)

@@ -166,6 +166,24 @@ async def test_an_agent_run_calls_tools_through_the_servers_chat_template(server
         assert all(m["completion_tokens"] <= LIMIT for m in answers(task))
 
 
+@pytest.mark.slow
+async def test_a_hung_server_ends_the_run_in_bounded_time_with_the_tasks_lost(model: Path, tmp_path: Path) -> None:
+    """The server stopped (SIGSTOP): connections are accepted, nothing is answered. The first
+    requests wait out their timeout; the rest are refused unsent, so the run ends with every task
+    lost after a couple of timeouts instead of one per request and attempt."""
+    with LlamaServer(model, n_ctx=CONTEXT, log=tmp_path / "server.log") as hung:
+        hung.freeze()
+        backend = WatchedBackend(llm(hung.url, timeout_s=3.0, max_attempts=3, batch_size=2))
+        settings = RunSettings(llm=backend.settings, only=SLUGS, variations=2, out=tmp_path, run_name="hung",
+                               progress=False, workers=1)
+        try:
+            run = json.loads((await run_benchmark(settings, backend=backend)).read_text())
+        finally:
+            hung.freeze(False)
+    assert run["summary"]["infrastructure_failures"] == 6 and run["summary"]["counted"] == 0
+    assert backend.sent <= 2 * 2 + 1  # of 6 selections x 3 attempts = 18
+
+
 def meceng_run(out: Path, name: str, url: str) -> subprocess.Popen[str]:
     """``meceng run`` against the server as a user types it: six level 1-2 tasks, a 16-token limit."""
     args = ["--backend", "openai", "--base-url", url, "--model", SERVED_NAME, "--num-predict", str(LIMIT),
