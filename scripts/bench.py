@@ -9,7 +9,9 @@
 4. pipelining: wall time of a run with simulated LLM latency divided by
    max(LLM-only time, evaluation-only time);
 5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
-   realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory.
+   realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory;
+6. the harness's CPU per request through the OpenAI backend against a real server (llama.cpp's,
+   ``bench_real_server.py``, needs the ``servers`` extra) beside the fake one.
 
     python scripts/bench.py [--json FILE] [--quick]
 """
@@ -29,6 +31,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import bench_real_server
 import bench_scale
 from fake_ollama import FakeOllama, chat_reply
 
@@ -183,12 +186,15 @@ async def main_async(quick: bool) -> dict[str, object]:
     print("5. server scale:", flush=True)
     scale = await asyncio.to_thread(bench_scale.server_scale, scale_args)
     print("5. " + bench_scale.report(scale), flush=True)
+    real = await asyncio.to_thread(bench_real_server.real_server_overhead, 12 if quick else 24)
+    print("6. " + bench_real_server.report(real), flush=True)
     results.update(
         cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
         hardware_scaling=tp["hardware_scaling"],
         scheduler_efficiency=sched, pipelining_ratio=pipe["pipelining_ratio"], cores=cores,
         server_scale=scale, run_over_llm_only=scale["run_over_llm_only"],
         parent_cpu_ms_per_task=scale["parent_cpu_ms_per_task"], parent_peak_rss_mb=scale["parent_peak_rss_mb"],
+        real_server_overhead=real,
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
     )

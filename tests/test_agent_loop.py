@@ -229,3 +229,43 @@ async def test_mesh_part_reports_the_agents_part_never_the_ground_truth() -> Non
     assert flagged["stage"] == "flagged"
     answer = (await Toolbox(part, part_catalog()).call("simulate", {"code": other})).text
     assert "simulate" in json.loads(answer)["error"]
+
+
+@pytest.mark.parametrize("refused_round", [1, 2])
+async def test_a_conversation_over_the_servers_context(tmp_path: Path, refused_round: int) -> None:
+    """The task's first prompt refused for its length: nothing the model did, the task is not
+    graded (context_exceeded). A later round refused: the conversation the model led outgrew the
+    context, like the token budget; the program it had is graded."""
+    from fake_ollama import openai_reply
+
+    from meceng.agents.backend_openai import OpenAIBackend
+
+    instance = default_registry().get(SLUG).instance(0)
+    overflow = {"error": {"message": "This model's maximum context length is 4096 tokens. However, you requested "
+                                     "4200 tokens (4136 in the messages, 64 in the completion).",
+                          "code": "context_length_exceeded"}}
+
+    def responder(body):
+        messages = body["messages"]
+        if "<components>" in messages[0]["content"]:
+            return 200, openai_reply(gold_selection(instance.required_components)), {}
+        if len(messages) >= 2 * refused_round - 1:
+            return 400, overflow, {}
+        reply = openai_reply("", finish_reason="tool_calls")
+        reply["choices"][0]["message"]["tool_calls"] = [{"id": "call_1", "type": "function", "function": {
+            "name": "simulate", "arguments": json.dumps({"code": broken(instance.reference_program)})}}]
+        return 200, reply, {}
+
+    async with FakeOllama(responder) as server:
+        llm = LLMSettings(model="m", backend="openai", hosts=(server.url + "/v1",), num_predict=64)
+        settings = RunSettings(llm=llm, only=(SLUG,), variations=1, out=tmp_path, run_name="agent", progress=False,
+                               agent="loop", max_rounds=4)
+        run = json.loads((await run_benchmark(settings, backend=OpenAIBackend(llm))).read_text())
+    task = run["tasks"][0]
+    if refused_round == 1:
+        assert task["first_failure"] == "infrastructure" and task["context_exceeded"]["prompt_tokens"] == 4136
+        assert run["summary"]["counted"] == 0 and run["summary"]["context_exceeded"] == 1
+    else:
+        assert task["first_failure"] == "finished_assemble" and "context_exceeded" not in task
+        assert task["agent"]["stop_reason"] == "context_full" and task["agent"]["tool_calls"] == {"simulate": 1}
+        assert run["summary"]["counted"] == 1

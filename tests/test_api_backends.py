@@ -10,6 +10,7 @@ import base64
 import json
 import os
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -500,3 +501,113 @@ def test_cli_without_key_says_so_and_writes_nothing(tmp_path: Path) -> None:
                           capture_output=True, text=True, timeout=120, env=env)
     assert proc.returncode == 2 and "ANTHROPIC_API_KEY" in proc.stderr
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize(("host", "fields"), [
+    ("https://api.openai.com/v1", {"max_completion_tokens"}),
+    ("https://myres.openai.azure.com/openai/v1", {"max_completion_tokens"}),
+    ("http://127.0.0.1:8000/v1", {"max_tokens", "max_completion_tokens"}),
+])
+def test_answer_limit_fields_per_server(host: str, fields: set[str]) -> None:
+    from meceng.agents.backend_openai import answer_limit_fields
+
+    sent = answer_limit_fields(host, 2048)
+    assert set(sent) == fields and set(sent.values()) == {2048}
+
+
+OVERFLOW_BODIES = [  # (body as each server words it, prompt tokens, context)
+    ({"error": {"message": "This model's maximum context length is 4096 tokens. However, you requested 5700 tokens "
+                           "(5636 in the messages, 64 in the completion). Please reduce the length of the messages "
+                           "or completion.", "type": "invalid_request_error", "code": "context_length_exceeded"}},
+     5636, 4096),
+    ({"error": {"code": 400, "message": "the request exceeds the available context size, try increasing it",
+                "type": "exceed_context_size_error", "n_prompt_tokens": 5000, "n_ctx": 4096}}, 5000, 4096),
+    ({"object": "error", "message": "'max_tokens' or 'max_completion_tokens' is too large: 2048. This model's maximum "
+                                    "context length is 4096 tokens and your request has 3000 input tokens "
+                                    "(2048 > 4096 - 3000).", "type": "BadRequestError", "code": 400}, 3000, 4096),
+    ({"object": "error", "message": "Requested token count exceeds the model's maximum context length of 8192 "
+                                    "tokens. You requested a total of 9000 tokens: 7000 tokens from the input "
+                                    "messages and 2000 tokens for the completion."}, 7000, 8192),
+]
+
+
+@pytest.mark.parametrize(("body", "prompt", "context"), OVERFLOW_BODIES)
+def test_context_overflow_is_read_from_each_servers_words(body: dict[str, Any], prompt: int, context: int) -> None:
+    from meceng.agents.backend_openai import context_exceeded
+
+    overflow = context_exceeded(400, json.dumps(body), "http://h/v1", 2048)
+    assert overflow is not None and not overflow.transient
+    assert (overflow.prompt_tokens, overflow.context, overflow.answer_limit) == (prompt, context, 2048)
+    assert f"{prompt:,} prompt tokens" in str(overflow) and f"{prompt + 2048:,} tokens" in str(overflow)
+
+
+def test_other_refusals_are_not_context_overflows() -> None:
+    from meceng.agents.backend_openai import context_exceeded
+
+    unsupported = {"error": {"message": "Unsupported value: 'temperature'", "type": "invalid_request_error"}}
+    assert context_exceeded(400, json.dumps(unsupported), "h", 64) is None
+    assert context_exceeded(500, json.dumps(OVERFLOW_BODIES[0][0]), "h", 64) is None
+
+
+async def test_prompt_over_the_context_is_said_once_kept_by_resume_and_graded_on_a_named_server(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A 400 context_length_exceeded is asked once, recorded with its numbers and left out of the
+    rates; a plain --resume keeps it (the same server would refuse it again), a resume on a server
+    the user names (--host) asks again and grades it."""
+    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.cli.commands import print_summary
+
+    known = instances(("single_mass_oscillator", "single_pendulum"))
+    pendulum_text = next(d for d, i in known.items() if i.slug == "single_pendulum")
+
+    def small_context(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        if pendulum_text in prompt_of(body):
+            return 400, OVERFLOW_BODIES[0][0], {}
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    def large_context(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    only = ("single_mass_oscillator", "single_pendulum")
+    async with FakeOllama(small_context) as small:
+        llm = LLMSettings(model="m", backend="openai", hosts=(small.url + "/v1",), num_predict=64, backoff_s=0.01)
+        settings = RunSettings(llm=llm, only=only, variations=1, out=tmp_path, run_name="ctx", progress=False)
+        run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
+        refused = [b for b in small.requests if pendulum_text in prompt_of(b)]
+        assert len(refused) == 1  # a permanent refusal: not retried
+        resumed = await run_benchmark(replace(settings, resume=True), backend=OpenAIBackend(llm))
+        assert len(small.requests) == 3  # the plain resume sent nothing: that server would refuse it again
+    run = json.loads(resumed.read_text())
+    pendulum = next(t for t in run["tasks"] if t["slug"] == "single_pendulum")
+    assert pendulum["first_failure"] == "infrastructure" and pendulum["stages"] == []
+    assert pendulum["context_exceeded"] == {"prompt_tokens": 5636, "context": 4096, "answer_limit": 64,
+                                            "host": small.url + "/v1"}
+    assert "5,636 prompt tokens + 64 answer limit > 4,096 context" in pendulum["infrastructure_error"]
+    assert run["summary"]["counted"] == 1 and run["summary"]["rates"]["overall"] == 1.0
+    assert run["summary"]["context_exceeded"] == 1
+    print_summary(run_json)
+    said = capsys.readouterr().out
+    assert "did not fit the server's context of 4,096 tokens" in said and "at least 5,700 tokens" in said
+    assert "--host URL" in said and "lost to the server" not in said
+
+    async with FakeOllama(large_context) as large:
+        llm = replace(llm, hosts=(large.url + "/v1",))
+        again = replace(settings, llm=llm, resume=True, retry_overflow=True)
+        run = json.loads((await run_benchmark(again, backend=OpenAIBackend(llm))).read_text())
+    assert len(large.requests) == 2  # only the pendulum's selection and program
+    assert run["summary"]["counted"] == 2 and run["summary"]["rates"]["overall"] == 1.0
+    assert run["summary"]["context_exceeded"] == 0
+
+
+def test_resume_with_host_asks_again_what_did_not_fit(tmp_path: Path) -> None:
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import resumed_settings
+
+    settings = RunSettings(llm=LLMSettings(model="m", backend="openai", hosts=("http://old:1/v1",)))
+    (tmp_path / "r").mkdir()
+    (tmp_path / "r" / "settings.json").write_text(json.dumps(settings.to_json()))
+    plain = resumed_settings(build_parser().parse_args(["run", "--resume", str(tmp_path / "r")]))
+    named = resumed_settings(build_parser().parse_args(["run", "--resume", str(tmp_path / "r"),
+                                                        "--host", "http://new:2/v1"]))
+    assert plain.retry_overflow is False and plain.llm.hosts == ("http://old:1/v1",)
+    assert named.retry_overflow is True and named.llm.hosts == ("http://new:2/v1",)

@@ -76,7 +76,7 @@ class AnthropicBackend(EndpointBackend):
             raise LLMError(f"anthropic error {status}: {_error_text(exc)}", transient=transient, status=status,
                            retry_after=parse_retry_after(exc.response.headers.get("retry-after"))) from exc
         except anthropic.APIConnectionError as exc:  # also the timeouts
-            self._note_failure(endpoint, True)
+            self._note_silence(endpoint)
             raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
                            transient=True) from exc
         except anthropic.APIResponseValidationError as exc:

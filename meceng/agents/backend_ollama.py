@@ -60,7 +60,7 @@ class OllamaBackend(EndpointBackend):
                 payload = await response.read()
                 status, retry_after = response.status, parse_retry_after(response.headers.get("Retry-After"))
         except (aiohttp.ClientError, OSError, TimeoutError) as exc:
-            self._note_failure(endpoint, True)
+            self._note_silence(endpoint)
             raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
                            transient=True) from exc
         if status >= 400:

@@ -172,6 +172,27 @@ class LLMError(Exception):
         self.retry_after = retry_after
 
 
+class ContextExceeded(LLMError):
+    """The server refused a prompt that its context cannot hold together with the answer limit.
+
+    Neither the model's failure (it never saw the prompt) nor a passing one (the same server will
+    refuse the same prompt every time): the task is not graded, the run says so once with the
+    numbers, and ``--resume`` asks again only on a server the user names (``--host``).
+    """
+
+    def __init__(self, message: str, *, prompt_tokens: int | None, context: int | None, answer_limit: int,
+                 host: str, status: int | None = 400) -> None:
+        super().__init__(message, transient=False, status=status)
+        self.prompt_tokens = prompt_tokens
+        self.context = context
+        self.answer_limit = answer_limit
+        self.host = host
+
+    def to_json(self) -> dict[str, Any]:
+        return {"prompt_tokens": self.prompt_tokens, "context": self.context, "answer_limit": self.answer_limit,
+                "host": self.host}
+
+
 class Backend(Protocol):
     name: str
 

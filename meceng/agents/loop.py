@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, LLMError, assistant_message, tool_message
+from meceng.agents.llm import Backend, ChatRequest, ContextExceeded, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
 from meceng.agents.prompts import DEFAULT_CODE, gold_code
 from meceng.agents.steps import Selection, generation_prompt
@@ -54,6 +54,7 @@ class AgentResult:
     transcript: list[dict[str, Any]] = field(default_factory=list)
     infrastructure_error: str | None = None
     reasoning_tokens: int = 0  # of completion_tokens, where the API reports them
+    context_exceeded: dict[str, Any] | None = None  # the first prompt did not fit the server's context
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -100,6 +101,12 @@ async def run_agent(
                               tools=toolbox.schemas)
         try:
             response = await backend.chat(request)
+        except ContextExceeded as exc:
+            if rounds == 1:  # the task itself does not fit: nothing the model did
+                return AgentResult(None, None, str(exc), "infrastructure", rounds, dict(toolbox.calls), 0, 0,
+                                   transcript, infrastructure_error=str(exc), context_exceeded=exc.to_json())
+            stop = "context_full"  # the conversation the model led outgrew the context, like the token budget
+            break
         except LLMError as exc:
             return AgentResult(first_code, last_code, str(exc), "infrastructure", rounds, dict(toolbox.calls),
                                completion, prompt_tokens, transcript, infrastructure_error=str(exc),

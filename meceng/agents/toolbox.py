@@ -169,6 +169,9 @@ class Toolbox:
     async def call(self, name: str, arguments: dict[str, Any]) -> ToolResult:
         """Run a tool; unknown tools and bad arguments are answered, never raised."""
         self.calls[name] += 1
+        if "_unparsed" in arguments:  # the backend could not read the call's arguments as JSON
+            return ToolResult(json.dumps({"error": f"the arguments of {name} are not valid JSON (cut off by the "
+                                                   f"answer limit?): {str(arguments['_unparsed'])[:200]}"}))
         try:
             if name not in {t["name"] for t in self.schemas}:
                 raise LookupError(name)

@@ -111,7 +111,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-progress", action="store_true")
     parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
                         help="continue a killed run in RUN_DIR with its saved settings (--host, if given, "
-                             "replaces the saved servers)")
+                             "replaces the saved servers and asks again the prompts that did not fit the old "
+                             "server's context)")
 
 
 def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
@@ -167,5 +168,6 @@ def resumed_settings(args: argparse.Namespace) -> RunSettings:
 
     settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
     if args.host:  # where the server is now: not part of what the run measures
-        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)))
+        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)),
+                                       retry_overflow=True)
     return dataclasses.replace(settings, progress=not args.no_progress)

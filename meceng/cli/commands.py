@@ -157,21 +157,43 @@ def print_summary(run_json: Path) -> None:
     # one line per level: parts and assemblies have different stages, a mixed rate would mislead
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
-        lost_here = block.get("infrastructure_failures") or 0
+        unfit_here = block.get("context_exceeded") or 0
+        lost_here = (block.get("infrastructure_failures") or 0) - unfit_here
         if not block["counted"]:
             line = "nothing graded"
         print(f"level {level} ({block['counted']}): {line}"
-              + (f"  [{lost_here} lost to the server]" if lost_here else ""))
+              + (f"  [{lost_here} lost to the server]" if lost_here else "")
+              + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
     totals = summary.get("tokens", {}).get("totals")
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
               f"(of which {totals['reasoning']:,} reasoning)")
-    lost = next((t for t in run["tasks"] if t.get("first_failure") == "infrastructure"), None)
-    if lost is not None:
-        count = summary["infrastructure_failures"]
+    lost = [t for t in run["tasks"] if t.get("first_failure") == "infrastructure"]
+    unfit = [t["context_exceeded"] for t in lost if t.get("context_exceeded")]
+    if unfit:
+        print(overflow_summary(unfit, run_json.parent))
+    lost = [t for t in lost if not t.get("context_exceeded")]
+    if lost:
+        count = len(lost)
         print(f"{count} task{'s' if count != 1 else ''} lost to the server, left out of the rates; the first: "
-              f"{lost['slug']} seed {lost['seed']}: {lost.get('infrastructure_error')}\n"
+              f"{lost[0]['slug']} seed {lost[0]['seed']}: {lost[0].get('infrastructure_error')}\n"
               f"redo them once that is fixed: meceng run --resume {run_json.parent}")
+
+
+def overflow_summary(unfit: list[dict[str, Any]], run_dir: Path) -> str:
+    """What the prompts that did not fit the server's context need, said once for all of them."""
+    count = len(unfit)
+    prompts = [u["prompt_tokens"] for u in unfit if u.get("prompt_tokens")]
+    contexts = sorted({u["context"] for u in unfit if u.get("context")})
+    limit = max(u["answer_limit"] for u in unfit)
+    largest = f"the largest {max(prompts):,} prompt tokens + {limit:,} answer limit" if prompts else \
+        f"their prompt tokens + {limit:,} answer limit"
+    need = f"at least {max(prompts) + limit:,} tokens" if prompts else "a larger context"
+    return (f"{count} task{'s' if count != 1 else ''} not graded: the prompt did not fit the server's context of "
+            f"{', '.join(f'{c:,}' for c in contexts) or '?'} tokens ({largest}); left out of the rates, "
+            f"and a plain --resume keeps them (that server would refuse them again).\n"
+            f"grade them on a server with a context of {need}: "
+            f"meceng run --resume {run_dir} --host URL")
 
 
 def cmd_report(args: argparse.Namespace) -> int:

@@ -44,6 +44,8 @@ def stage_rates(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
     overall = sum(1 for r in counted if r.get("overall"))
     rates["overall"] = overall / n if n else None
     return {"tasks": len(records), "counted": n, "infrastructure_failures": len(records) - n,
+            # of those, prompts the server's context could not hold (a server setting, not a passing failure)
+            "context_exceeded": sum(1 for r in records if r.get("context_exceeded")),
             "passed": {**{k: passed[k] for k in order}, "overall": overall}, "rates": rates}
 
 

@@ -29,6 +29,9 @@ class RunSettings:
     solution_tolerance: float = 1e-5
     progress: bool = True
     resume: bool = False
+    # a resume on a server the user named (--resume --host): prompts that did not fit the old
+    # server's context are asked again; how a run is continued, not what it measures (not saved)
+    retry_overflow: bool = False
     executor: str = "fork"
     agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code;
     # "repair": the repair benchmark (a draft with a seeded fault to find and fix)
