@@ -17,6 +17,7 @@ from typing import Any
 import httpx
 
 from meceng.agents.llm import (
+    IMAGE_MEDIA_TYPE,
     ChatRequest,
     ChatResponse,
     ContextExceeded,
@@ -24,6 +25,7 @@ from meceng.agents.llm import (
     LLMSettings,
     ToolCall,
     parse_retry_after,
+    pictures_after_tool_results,
 )
 from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
 from meceng.logs import get_logger
@@ -209,8 +211,6 @@ def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]
     """The agent's conversation in OpenAI's form: calls with ids and JSON-string arguments,
     results answering a ``tool_call_id``; a tool message takes text only, so its pictures follow
     the turn's results in a user message of ``image_url`` parts (base64 data URLs)."""
-    from meceng.agents.llm import IMAGE_MEDIA_TYPE, pictures_after_tool_results
-
     wire = []
     for message in pictures_after_tool_results(messages):
         if message["role"] == "tool":
