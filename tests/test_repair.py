@@ -141,3 +141,28 @@ def test_meceng_drafts_prints_labels_and_refuses_an_assembly() -> None:
     refused = subprocess.run([sys.executable, "-m", "meceng", "drafts", "rotor_in_bearing_block"],
                              capture_output=True, text=True, timeout=300)
     assert refused.returncode == 2 and "assembly" in refused.stderr
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(1800)
+@pytest.mark.parametrize(("levels", "least_agreement"), [(("1", "2"), 1.0), (("3a",), 0.95)])
+async def test_drafts_fail_and_the_grader_names_their_label(levels: tuple[str, ...], least_agreement: float) -> None:
+    """Every task model's seed-0 drafts graded: a fault without effect is no task, and the
+    grader's category (a part's first failed stage) must be the draft's label (goal: 95 %)."""
+    from meceng.eval.chain import Tolerances
+    from meceng.pipeline.drafts import grade_drafts
+    from meceng.pipeline.evaluation import Evaluator
+    from meceng.tools.executor import ExecutionLimits
+
+    evaluator = Evaluator(2, ExecutionLimits(), Tolerances())
+    failing, agreeing, mismatches = 0, 0, []
+    for model in default_registry().select(levels=levels):
+        graded = await grade_drafts(model.instance(0), evaluator)
+        assert any(g.fails for g in graded), model.slug
+        for g in graded:
+            failing += g.fails
+            agreeing += g.fails and g.agrees
+            if g.fails and not g.agrees:
+                mismatches.append((model.slug, g.draft.id, g.first_failure, g.categories))
+        evaluator.release(model.instance(0))
+    assert agreeing / failing >= least_agreement, mismatches
