@@ -166,3 +166,21 @@ async def test_drafts_fail_and_the_grader_names_their_label(levels: tuple[str, .
                 mismatches.append((model.slug, g.draft.id, g.first_failure, g.categories))
         evaluator.release(model.instance(0))
     assert agreeing / failing >= least_agreement, mismatches
+
+
+def test_drafts_parse_behind_the_harness_lock() -> None:
+    """CPython 3.11 breaks when two threads parse at once ('AST constructor recursion depth
+    mismatch', seen when drafts were written on the event loop while the static check parsed in a
+    thread): the drafts parse through the same lock as every other parse of the parent."""
+    import threading
+
+    from meceng import syntax
+
+    instance = default_registry().get("single_pendulum").instance(0)
+    done = threading.Event()
+    with syntax._PARSING:
+        worker = threading.Thread(target=lambda: (candidate_drafts(instance), done.set()))
+        worker.start()
+        assert not done.wait(0.3)  # waits for the lock the test holds
+    worker.join(10)
+    assert done.is_set()

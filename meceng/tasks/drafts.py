@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from meceng.syntax import parse
 from meceng.tasks.base import TaskInstance
 
 #: For parts the grader gives stages, not categories: the stages a part fault should fail first.
@@ -104,8 +105,8 @@ def _list_items(node: ast.AST) -> list[ast.expr] | None:
 
 
 def _is_zero(source: str, node: ast.AST) -> bool:
-    try:
-        return float(ast.literal_eval(_segment(source, node))) == 0.0
+    try:  # the node itself, not its text: a parse here would race the harness's parses in other threads
+        return float(ast.literal_eval(node)) == 0.0
     except (ValueError, SyntaxError, TypeError):
         return False
 
@@ -230,7 +231,7 @@ def _material(source: str, tree: ast.Module, rng: random.Random) -> tuple[_Edit,
         for kw in call.keywords:
             if kw.arg == "density":
                 try:
-                    value = float(ast.literal_eval(_segment(source, kw.value)))
+                    value = float(ast.literal_eval(kw.value))
                 except (ValueError, SyntaxError, TypeError):
                     return _replace(source, kw.value, "2700.0"), "material: aluminium's density"
                 other = 2700.0 if abs(value - 2700.0) > 1.0 else 7850.0
@@ -291,7 +292,7 @@ def candidate_drafts(instance: TaskInstance) -> list[Draft]:
     if instance.kind == "assembly":
         return []
     source = instance.reference_program
-    tree = ast.parse(source)
+    tree = parse(source)
     faults = PART_FAULTS if instance.kind == "part" else RIGID_FAULTS
     drafts = []
     for name, label, operator in faults:
