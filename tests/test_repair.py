@@ -184,3 +184,26 @@ def test_drafts_parse_behind_the_harness_lock() -> None:
         assert not done.wait(0.3)  # waits for the lock the test holds
     worker.join(10)
     assert done.is_set()
+
+
+async def test_a_draft_the_harness_cannot_grade_is_left_out_not_fatal(monkeypatch: pytest.MonkeyPatch) -> None:
+    from meceng.eval.chain import Tolerances
+    from meceng.pipeline import drafts as module
+    from meceng.pipeline.evaluation import Evaluator
+    from meceng.tools.executor import ExecutionLimits
+
+    evaluator = Evaluator(2, ExecutionLimits(), Tolerances())
+    original = evaluator.evaluate
+    calls = 0
+
+    async def flaky(*args, **kwargs):
+        nonlocal calls
+        calls += 1
+        if calls == 1:
+            raise SystemError("AST constructor recursion depth mismatch")
+        return await original(*args, **kwargs)
+
+    monkeypatch.setattr(evaluator, "evaluate", flaky)
+    instance = default_registry().get("single_pendulum").instance(0)
+    tasks = await module.repair_instances([instance], evaluator, per_task=9)
+    assert 0 < len(tasks) == len(candidate_drafts(instance)) - 1

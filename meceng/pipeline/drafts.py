@@ -8,10 +8,13 @@ import random
 from dataclasses import dataclass, replace
 from typing import Any
 
+from meceng.logs import get_logger
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.drafts import PART_EXPECTED, Draft, candidate_drafts
 
 from .evaluation import Evaluator
+
+log = get_logger(__name__)
 
 
 @dataclass(frozen=True)
@@ -40,10 +43,14 @@ class GradedDraft:
 async def grade_drafts(instance: TaskInstance, evaluator: Evaluator) -> list[GradedDraft]:
     """Every candidate draft of the instance, graded (the reference execution is shared)."""
     async def one(draft: Draft) -> GradedDraft:
-        if instance.kind == "part":
-            verdict = (await evaluator.evaluate_part(instance, draft.program, None, None))[0]
-        else:
-            verdict = (await evaluator.evaluate(instance, draft.program, None, None))[0]
+        try:
+            if instance.kind == "part":
+                verdict = (await evaluator.evaluate_part(instance, draft.program, None, None))[0]
+            else:
+                verdict = (await evaluator.evaluate(instance, draft.program, None, None))[0]
+        except Exception as exc:  # a draft the harness cannot grade is no task; the run goes on
+            log.error("draft not graded", task=instance.key, draft=draft.id, error=f"{type(exc).__name__}: {exc}")
+            return GradedDraft(draft, False, "not graded", ())
         return GradedDraft(draft, not verdict.overall and verdict.infrastructure_error is None, verdict.first_failure,
                            tuple(verdict.error_categories))
     return list(await asyncio.gather(*(one(d) for d in candidate_drafts(instance))))
