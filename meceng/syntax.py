@@ -21,3 +21,10 @@ def parse(source: str) -> ast.Module:
     """``ast.parse(source)``, one thread at a time (SyntaxError passes through)."""
     with _PARSING:
         return ast.parse(source)
+
+
+def parsing() -> threading.Lock:
+    """The lock itself, for library calls that parse behind our back: numpy reads every ``.npy``
+    header with ``ast.literal_eval`` (a trajectory loaded off the event loop raced the static check:
+    a 174-draft repair run lost its first draft to "AST constructor recursion depth mismatch")."""
+    return _PARSING

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import time
+from pathlib import Path
 
 import pytest
 
@@ -143,3 +144,27 @@ async def test_a_closed_fork_server_starts_no_new_one() -> None:
     with pytest.raises(RuntimeError, match="closed"):
         await pool.start()
     assert not os.path.exists(pool.socket_path)
+
+
+def test_reading_a_trajectory_waits_for_the_parse_lock(tmp_path: Path) -> None:
+    """numpy reads an .npy header with ast.literal_eval, which races any other parse in CPython
+    3.11 ('AST constructor recursion depth mismatch'): the parent reads results behind the lock."""
+    import json as json_module
+    import threading
+
+    import numpy as np
+
+    from meceng import syntax
+    from meceng.tools.executor import ExecutionLimits, _collect
+
+    token = "t0k3n"
+    (tmp_path / f"result-{token}.json").write_text(json_module.dumps({"stage": "solved", "error": None}))
+    np.save(tmp_path / f"trajectory-{token}.npy", np.zeros((3, 2)))
+    done = threading.Event()
+    with syntax.parsing():
+        reader = threading.Thread(target=lambda: (_collect(tmp_path, 0, False, b"", b"", 0.0, ExecutionLimits(),
+                                                           token), done.set()))
+        reader.start()
+        assert not done.wait(0.3)
+    reader.join(10)
+    assert done.is_set()

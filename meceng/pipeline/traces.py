@@ -24,6 +24,7 @@ from meceng.agents.inspect.scene import build_scene
 from meceng.agents.inspect.view import build_view
 from meceng.eval.solution import resample
 from meceng.logs import get_logger
+from meceng.syntax import parsing
 
 from .rundir import safe_name
 
@@ -162,7 +163,7 @@ def load_traces(run_dir: Path, key: str) -> dict[str, Any] | None:
     if not path.exists():
         return None
     try:
-        with np.load(path) as data:
+        with parsing(), np.load(path) as data:  # numpy parses each array's header
             return {name: data[name] for name in data.files}
     except (OSError, ValueError) as exc:
         log.warning("traces_unreadable", path=str(path), error=str(exc))

@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from meceng.syntax import parsing
 from meceng.tools.safety import ALLOWED_IMPORT_ROOTS, PART_IMPORT_ROOTS, check_program
 from meceng.tools.warm import WarmPool
 
@@ -303,13 +304,14 @@ def _collect(
     times = trajectory = None
     traj_path = scratch / f"trajectory-{token}.npy"
     if traj_path.exists():
-        data = np.load(traj_path)
+        with parsing():  # numpy parses the header with ast.literal_eval
+            data = np.load(traj_path)
         times, trajectory = data[:, 0], data[:, 1:]
     part = result.get("part")
     surface = fine_surface = None
     part_path = scratch / f"part-{token}.npz"
     if part is not None and part_path.exists():
-        with np.load(part_path) as data:
+        with parsing(), np.load(part_path) as data:
             surface = (data["vertices"], data["triangles"])
             if "fine_vertices" in data:
                 fine_surface = (data["fine_vertices"], data["fine_triangles"])
