@@ -10,7 +10,9 @@
 Flags override every chosen study; --model, --temperature, --think, --select-template and
 --code-template may be repeated and replace that axis of the grid. A grid point two studies
 share runs once. Run folders under --out are named from their settings: a finished point is
-skipped, an interrupted one resumed.
+skipped, an interrupted one resumed. Runs whose servers are free go at the same time (see
+meceng.farm), their programs on one worker pool; ground truths are executed once into the
+reference store (OUT/references) and reused by every run and later sweep.
 """
 
 from __future__ import annotations
@@ -29,8 +31,9 @@ from rich.table import Table
 
 from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
+from meceng.farm import SweepJob, run_sweep
 from meceng.logs import configure_logging
-from meceng.pipeline import RunSettings, run_benchmark
+from meceng.pipeline import RunSettings
 from meceng.sweep import (
     GridPoint,
     ModelSpec,
@@ -84,6 +87,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", type=Path)
     p.add_argument("--name", default=None, help="run folder name (single grid point only)")
     p.add_argument("--no-progress", action="store_true")
+    p.add_argument("--reference-store", type=Path, default=None,
+                   help="where ground-truth executions are kept for every run and later sweeps "
+                        "(default OUT/references)")
+    p.add_argument("--no-reference-store", action="store_true", help="execute every ground truth in every run")
     return p
 
 
@@ -152,27 +159,34 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
                   "two only when all its parts pass.")
 
 
-def run_point(point: GridPoint, spec: SweepSpec, args: argparse.Namespace) -> dict[str, Any]:
-    name = args.name or point.name
-    run_dir = spec.out / name
-    if (run_dir / "run.json").exists():
-        print(f"{name}: finished earlier, skipped")
-        return {"run": str(run_dir / "run.json"), "skipped": True}
-    settings = RunSettings(
-        llm=point.llm(), levels=point.levels, only=point.only, variations=point.variations, seed=point.seed,
-        out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
-        exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
-        code_template=point.code_template, progress=not args.no_progress,
-        resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
-    )
-    try:
-        path = asyncio.run(run_benchmark(settings))
-    except Exception as exc:  # one grid point never ends the sweep
-        print(f"{name}: failed: {exc}", file=sys.stderr)
-        return {"run": str(run_dir), "error": str(exc)}
-    print_summary(path)
-    summary = json.loads(path.read_text())["summary"]
-    return {"run": str(path), "overall": summary["rates"]["overall"]}
+def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespace, workers: int) -> list[SweepJob]:
+    """The runs of the sweep with the settings each is started (or resumed) with."""
+    jobs = []
+    for point in points:
+        name = args.name or point.name
+        run_dir = spec.out / name
+        settings = RunSettings(
+            llm=point.llm(), levels=point.levels, only=point.only, variations=point.variations, seed=point.seed,
+            out=spec.out, run_name=name, workers=workers, exec_timeout_s=spec.exec_timeout_s,
+            select_template=point.select_template, code_template=point.code_template,
+            progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor)
+        jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0]))
+    return jobs
+
+
+def report_results(results: list[dict[str, Any]]) -> None:
+    """After the live display: each run's summary, or why it did not run."""
+    for result in results:
+        name = Path(result["run"]).parent.name if result["run"].endswith("run.json") else Path(result["run"]).name
+        if result.get("skipped"):
+            print(f"{name}: finished earlier, skipped")
+        elif "busy" in result:
+            print(f"{name}: skipped, {result['busy']}")
+        elif "error" in result:
+            print(f"{name}: failed: {result['error']}", file=sys.stderr)
+        else:
+            print_summary(Path(result["run"]))
+            result["overall"] = json.loads(Path(result["run"]).read_text())["summary"]["rates"]["overall"]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -200,7 +214,11 @@ def main(argv: list[str] | None = None) -> int:
               "offline with: python scripts/sweep.py --model gold", file=sys.stderr)
         return 3
     configure_logging(None)
-    results = [run_point(point, spec, args) for point in points]
+    workers = spec.workers or max(1, os.cpu_count() or 1)  # one pool for all runs, sized to the machine
+    store = None if args.no_reference_store else (args.reference_store or spec.out / "references")
+    results = asyncio.run(run_sweep(sweep_jobs(points, spec, args, workers), workers, args.executor, store,
+                                    display=not args.no_progress))
+    report_results(results)
     print(json.dumps(results, indent=1))
     return 1 if any("error" in r for r in results) else 0
 

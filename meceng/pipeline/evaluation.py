@@ -26,6 +26,8 @@ from meceng.tools.executor import Execution, ExecutionLimits, execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
+from .store import ReferenceStore, reference_key
+
 
 class ReferenceCache:
     """Ground-truth executions, run once per task instance and shared by everyone who asks."""
@@ -67,9 +69,11 @@ class Evaluator:
 
     def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog | None = None,
                  pool: WarmPool | None = None, parts: Catalog | None = None,
-                 part_timeout_s: float = 300.0) -> None:
-        self.slots = asyncio.Semaphore(workers)
+                 part_timeout_s: float = 300.0, slots: asyncio.Semaphore | None = None,
+                 store: ReferenceStore | None = None) -> None:
+        self.slots = slots or asyncio.Semaphore(workers)  # a sweep's runs share one set of slots
         self.pool = pool
+        self.store = store
         self.limits = limits
         self.tolerances = tolerances
         self.catalog = catalog or rigid_catalog()
@@ -109,16 +113,28 @@ class Evaluator:
             return await execute(program, "", limits, check=check, pool=self.pool)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
-        if instance.kind == "part":
-            return await self.execute_part(instance.reference_program, instance, check=False)
-        return await self.execute(instance.reference_program, instance, check=False)
+        return await self._ground_truth(instance, instance.reference_program)
+
+    async def _ground_truth(self, instance: TaskInstance, program: str) -> Execution:
+        """A ground-truth execution: from the reference store when there is one, else run here."""
+
+        async def run() -> Execution:
+            if instance.kind == "part":
+                return await self.execute_part(program, instance, check=False)
+            return await self.execute(program, instance, check=False)
+
+        if self.store is None:
+            return await run()
+        limits = replace(self.part_limits, n_modes=instance.part.n_modes) if instance.kind == "part" else self.limits
+        sim = "" if instance.kind == "part" else instance.sim.block()
+        return await self.store.fetch(reference_key(program, sim, limits), run)
 
     async def _reference_at(self, instance: TaskInstance, maxh: float) -> Execution:
         """The ground-truth part meshed with another maxh (run once per instance and size)."""
         key = (instance.key, maxh)
         if key not in self._remeshed:
             program = re.sub(r"GenerateMesh\(maxh=[^)]*\)", f"GenerateMesh(maxh={maxh!r})", instance.reference_program)
-            self._remeshed[key] = asyncio.ensure_future(self.execute_part(program, instance, check=False))
+            self._remeshed[key] = asyncio.ensure_future(self._ground_truth(instance, program))
         return await asyncio.shield(self._remeshed[key])
 
     async def evaluate(

@@ -6,6 +6,7 @@ Everything a run writes goes through here, so the folder's layout is described i
 
 from __future__ import annotations
 
+import contextvars
 import datetime as dt
 import json
 import logging
@@ -169,9 +170,27 @@ def slim_record(record: dict[str, Any]) -> dict[str, Any]:
     return slim
 
 
+_RUN_LOG: contextvars.ContextVar[Path | None] = contextvars.ContextVar("meceng_run_log", default=None)
+
+
+class _ThisRun(logging.Filter):
+    """Lets through only the events of one run: runs of a sweep share the process and the logger,
+    and each task (and thread) a run starts inherits the run's context."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return _RUN_LOG.get() == self.path
+
+
 def attach_run_log(path: Path) -> logging.Handler:
-    """JSON lines of this run's log events into the run folder, for as long as the run lasts."""
+    """JSON lines of this run's log events into the run folder, for as long as the run lasts.
+    Called from the run's own task, so that events of concurrent runs go to their own folders."""
+    _RUN_LOG.set(path)
     handler = logging.FileHandler(path)
+    handler.addFilter(_ThisRun(path))
     handler.setFormatter(structlog.stdlib.ProcessorFormatter(
         processor=structlog.processors.JSONRenderer(),
         foreign_pre_chain=[structlog.processors.add_log_level, structlog.processors.TimeStamper(fmt="iso")]))
