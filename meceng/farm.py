@@ -39,6 +39,7 @@ from meceng.pipeline.lock import RunBusy
 from meceng.pipeline.services import SharedServices
 from meceng.pipeline.store import ReferenceStore
 from meceng.progress import Advance, live_display_enabled
+from meceng.sweep import GridPoint
 from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
@@ -57,6 +58,7 @@ class SweepJob:
     model: str
     settings: RunSettings
     planned_tasks: int
+    point: GridPoint | None = None  # the sweep's grid point it runs, when it came from a spec
 
     @property
     def hosts(self) -> tuple[str, ...]:

@@ -34,6 +34,7 @@ from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_
 from meceng.farm import SweepJob, run_sweep
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
+from meceng.shard import Shard, pick
 from meceng.sweep import (
     GridPoint,
     ModelSpec,
@@ -60,12 +61,48 @@ def parse_temperature(text: str) -> float | None:
         raise argparse.ArgumentTypeError("temperature must be a number or 'default'") from None
 
 
+def parse_shard(text: str) -> Shard:
+    try:
+        return Shard.parse(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def state_of(spec: SweepSpec, name: str) -> str:
+    if (spec.out / name / "run.json").exists():
+        return "finished"
+    return "resume" if (spec.out / name / "journal.jsonl").exists() else "planned"
+
+
+def plan_json(spec: SweepSpec, planned: list[PlannedRun], jobs: list[SweepJob], shard: Shard | None) -> str:
+    """The plan of this shard (or the whole sweep) for scripts: each run's folder, studies, model,
+    settings, tasks, LLM requests and state."""
+    studies: dict[str, list[str]] = {}
+    for item in planned:
+        studies.setdefault(item.point.name, []).append(item.study)
+    runs = []
+    for job in jobs:
+        assert job.point is not None
+        tasks, requests = point_workload(job.point)
+        runs.append({"folder": str(spec.out / job.name), "study": studies[job.point.name][0],
+                     "studies": studies[job.point.name], "model": job.model, "backend": job.settings.llm.backend,
+                     "hosts": list(job.hosts), "settings": job.settings.to_json(), "tasks": tasks,
+                     "requests": requests, "state": state_of(spec, job.name)})
+    return json.dumps({"shard": str(shard) if shard else None, "runs": runs,
+                       "tasks": sum(r["tasks"] for r in runs), "requests": sum(r["requests"] for r in runs)},
+                      indent=1)
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--spec", type=Path, default=None, help=f"TOML sweep spec (default {DEFAULT_SPEC.name})")
     p.add_argument("--study", action="append", help="run only this study of the spec; repeatable")
     p.add_argument("--dry-run", action="store_true",
                    help="print the planned runs, tasks and LLM requests per study; start nothing")
+    p.add_argument("--json", action="store_true", help="with --dry-run: the plan as JSON, one object per run")
+    p.add_argument("--shard", type=parse_shard, default=None,
+                   help="K/N: only the K-th (from 0) of N parts of the runs, balanced by LLM requests; "
+                        "inside a Slurm array SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT say it")
     p.add_argument("--model", action="append", help="model name; repeat for several (gold = ground truth)")
     p.add_argument("--backend", choices=tuple(DEFAULT_HOSTS), default=None)
     p.add_argument("--host", "--base-url", action="append", dest="host",
@@ -132,12 +169,7 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
                         overflow="fold")  # a folder name is folded onto a second line, never cut
     for item in planned:
         tasks, requests = point_workload(item.point)
-        if item.shared_with:
-            state = f"shared with {item.shared_with}"
-        elif (spec.out / item.point.name / "run.json").exists():
-            state = "finished"
-        else:
-            state = "resume" if (spec.out / item.point.name / "journal.jsonl").exists() else "planned"
+        state = f"shared with {item.shared_with}" if item.shared_with else state_of(spec, item.point.name)
         runs.add_row(item.study, item.point.name, f"{tasks:,}", f"{requests:,}", state)
     console.print(runs)
     summary = Table(title=spec.description or "Studies", title_justify="left")
@@ -170,7 +202,7 @@ def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespac
             out=spec.out, run_name=name, workers=workers, exec_timeout_s=spec.exec_timeout_s,
             select_template=point.select_template, code_template=point.code_template,
             progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor)
-        jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0]))
+        jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0], point))
     return jobs
 
 
@@ -202,8 +234,26 @@ def main(argv: list[str] | None = None) -> int:
     if not points:
         print("error: the sweep has no grid point (no models?)", file=sys.stderr)
         return 2
+    try:
+        shard = args.shard or Shard.from_env()
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    points = pick(points, shard, weight=lambda p: point_workload(p)[1], name=lambda p: p.name)
+    mine = {p.name for p in points}
+    planned = [item for item in planned if item.point.name in mine]
+    workers = spec.workers or max(1, os.cpu_count() or 1)  # one pool for all runs, sized to the machine
+    if args.dry_run and args.json:
+        print(plan_json(spec, planned, sweep_jobs(points, spec, args, workers), shard))
+        return 0
     if args.dry_run:
-        print_plan(spec, planned, Console())
+        if shard is not None:
+            print(f"shard {shard}: {len(points)} runs")
+        if points:
+            print_plan(spec, planned, Console())
+        return 0
+    if not points:
+        print(f"shard {shard}: no runs (more shards than runs)")
         return 0
     if args.name and len(points) > 1:
         print("error: --name needs a single grid point", file=sys.stderr)
@@ -214,7 +264,6 @@ def main(argv: list[str] | None = None) -> int:
               "offline with: python scripts/sweep.py --model gold", file=sys.stderr)
         return 3
     configure_logging(None)
-    workers = spec.workers or max(1, os.cpu_count() or 1)  # one pool for all runs, sized to the machine
     store = None if args.no_reference_store else (args.reference_store or spec.out / "references")
     results = asyncio.run(run_sweep(sweep_jobs(points, spec, args, workers), workers, args.executor, store,
                                     display=not args.no_progress))
