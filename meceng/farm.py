@@ -35,6 +35,7 @@ from meceng.agents.llm import make_backend
 from meceng.agents.scheduler import EndpointBackend, PrioritySlots
 from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
+from meceng.pipeline.grading import GradingPool
 from meceng.pipeline.lock import RunBusy
 from meceng.pipeline.services import SharedServices
 from meceng.pipeline.store import ReferenceStore
@@ -172,7 +173,8 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
                     display: bool = True) -> list[dict[str, Any]]:
     """Run the sweep's jobs concurrently; one result per job, in the jobs' order."""
     pool = WarmPool(child_env()) if executor == "fork" else None
-    shared = SharedServices(asyncio.Semaphore(workers), pool, ReferenceStore(store) if store else None)
+    grading = GradingPool(workers)
+    shared = SharedServices(asyncio.Semaphore(workers), pool, ReferenceStore(store) if store else None, grading)
     servers: dict[str, PrioritySlots] = {}
     results: dict[str, dict[str, Any]] = {}
     rank = {job.name: k for k, job in enumerate(jobs)}
@@ -185,6 +187,7 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
         finally:
             if pool is not None:
                 await pool.close()
+            await asyncio.to_thread(grading.close)
     log.info("sweep finished", runs=len(jobs), wall_s=time.perf_counter() - t0,
              references_made=shared.store.made if shared.store else None,
              references_reused=shared.store.hits if shared.store else None)

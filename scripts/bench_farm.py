@@ -8,7 +8,9 @@
    4-model level-3a sweep with the store against the same sweep without it. The 4 models answer
    with the ground truth (the gold backend under 4 names), so their programs cost as much as the
    references: that is the dearest case for the store's ratio, a real model's failing programs
-   are cheaper.
+   are cheaper;
+3. rescore of a gold run (1,000 tasks at 20 variations): grading on threads of the parent against
+   grading in the grading pool.
 
     python scripts/bench_farm.py [--latency 0.3] [--variations 2] [--json FILE]
 """
@@ -32,7 +34,7 @@ from fake_ollama import FakeOllama, chat_reply, prompted_instance
 from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.farm import SweepJob, run_sweep
-from meceng.pipeline import RunSettings
+from meceng.pipeline import RunSettings, rescore, run_benchmark
 from meceng.tasks.registry import default_registry
 
 RIGID = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")
@@ -117,6 +119,30 @@ async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
     return figures
 
 
+async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
+    """A gold level 1-2 run (20 variations: 1,000 tasks), rescored twice: grading on threads of the
+    parent (as before the grading pool) and in the grading pool; wall and the parent's own CPU."""
+    figures: dict[str, Any] = {}
+    with tempfile.TemporaryDirectory() as out:
+        llm = LLMSettings(model="gold", backend="gold")
+        settings = RunSettings(llm=llm, variations=variations, out=Path(out), run_name="gold", workers=workers,
+                               progress=False)
+        run_json = await run_benchmark(settings)
+        figures["tasks"] = len(json.loads(run_json.read_text())["tasks"])
+        for label, pool in (("threads", False), ("pool", True)):
+            own, t0 = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
+            await rescore(run_json.parent, workers=workers, grading_pool=pool)
+            wall = time.perf_counter() - t0
+            after = resource.getrusage(resource.RUSAGE_SELF)
+            figures[f"{label}_s"] = wall
+            figures[f"{label}_parent_cpu_ms_per_task"] = 1000 * (
+                after.ru_utime - own.ru_utime + after.ru_stime - own.ru_stime) / figures["tasks"]
+            summary = json.loads(run_json.read_text())["summary"]
+            assert summary["rates"]["overall"] == 1.0, "a gold program failed in the rescore"
+    figures["pool_over_threads"] = figures["pool_s"] / figures["threads_s"]
+    return figures
+
+
 async def main_async(latency: float, variations: int, workers: int) -> dict[str, Any]:
     conc = await concurrency(latency, variations, workers)
     print(f"sweep concurrency: {MODELS} models on {MODELS} servers (1 slot, {latency:g} s per request, "
@@ -128,7 +154,11 @@ async def main_async(latency: float, variations: int, workers: int) -> dict[str,
     print(f"reference store: level-3a sweep of {MODELS} models x {len(PARTS)} parts: evaluation CPU without the "
           f"store {store['without_store_cpu_s']:.1f} s, with it {store['with_store_cpu_s']:.1f} s -> "
           f"{store['store_cpu_ratio']:.3f} (verdicts identical)", flush=True)
-    return {"sweep_concurrency": conc, "reference_store": store}
+    again = await rescore_figures(variations * 10, workers)
+    print(f"rescore of a {again['tasks']}-task gold run: grading on the parent's threads {again['threads_s']:.1f} s "
+          f"({again['threads_parent_cpu_ms_per_task']:.1f} ms parent CPU a task), in the grading pool "
+          f"{again['pool_s']:.1f} s ({again['pool_parent_cpu_ms_per_task']:.1f} ms)", flush=True)
+    return {"sweep_concurrency": conc, "reference_store": store, "rescore": again}
 
 
 def main(argv: list[str] | None = None) -> int:

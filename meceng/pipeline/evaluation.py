@@ -26,6 +26,7 @@ from meceng.tools.executor import Execution, ExecutionLimits, execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
+from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
 
 
@@ -70,10 +71,11 @@ class Evaluator:
     def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog | None = None,
                  pool: WarmPool | None = None, parts: Catalog | None = None,
                  part_timeout_s: float = 300.0, slots: asyncio.Semaphore | None = None,
-                 store: ReferenceStore | None = None) -> None:
+                 store: ReferenceStore | None = None, grading: GradingPool | None = None) -> None:
         self.slots = slots or asyncio.Semaphore(workers)  # a sweep's runs share one set of slots
         self.pool = pool
         self.store = store
+        self.grading = grading  # where grading and traces run (None: a thread of this process)
         self.limits = limits
         self.tolerances = tolerances
         self.catalog = catalog or rigid_catalog()
@@ -150,11 +152,11 @@ class Evaluator:
             reference_task = asyncio.ensure_future(self.references.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
-        # off the event loop: graph isomorphism and trajectory resampling take ~10 ms a task, during
-        # which no LLM answer would be read and no request sent
-        verdict = await asyncio.to_thread(
-            evaluate_rigid, candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
-            selected=selected, required=instance.required_components,
+        # off the event loop and off this process: graph isomorphism and trajectory resampling take
+        # ~10 ms a task, during which no LLM answer would be read, and they scale with the cores
+        verdict = await offload(
+            self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
+            steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
         )
         return verdict, candidate, reference
@@ -196,10 +198,11 @@ class Evaluator:
                 if remeshed.part is not None:
                     frequencies = np.asarray(remeshed.part["eigenfrequencies"], dtype=float)
                     facts["reference_frequencies_at_maxh"] = size
-        load_mesh_library()  # on the loop's thread, before the metrics' worker thread uses it
+        if self.grading is None:
+            load_mesh_library()  # on the loop's thread, before the metrics' worker thread uses it
         t0 = time.perf_counter()
-        stages = await asyncio.to_thread(
-            evaluate_part, produced, truth, selected=selected, required=instance.required_components,
+        stages = await offload(
+            self.grading, evaluate_part, produced, truth, selected=selected, required=instance.required_components,
             dependencies=self.part_catalog.dependency_map(), failure=candidate.error,
             reference_frequencies=frequencies)
         facts["metrics_s"] = time.perf_counter() - t0

@@ -21,6 +21,7 @@ from meceng.eval.chain import RIGID_STAGES, StageResult, Verdict
 from meceng.tasks.base import TaskInstance
 
 from .evaluation import Evaluator
+from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .records import agent_block, agent_generation, lost_record, not_started_record, task_record
 from .rundir import RunWriter
@@ -76,7 +77,8 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
                          _times(t0, t_llm, time.perf_counter()), files)
     kind.extend(record, instance, graded, ctx.writer.run_dir)
     # the viewer's plots: the executions are dropped once the record exists
-    traces = await asyncio.to_thread(save_traces, ctx.writer.run_dir, instance.key, graded.candidate, graded.reference)
+    traces = await offload(evaluator.grading, save_traces, ctx.writer.run_dir, instance.key, graded.candidate,
+                           graded.reference)
     if traces is not None:
         record["files"]["traces"] = traces
     if agent is not None:

@@ -30,6 +30,7 @@ from meceng.tools.warm import WarmPool
 
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
+from .grading import GradingPool
 from .lock import HEARTBEAT_S, RunLock
 from .records import failed_record
 from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
@@ -110,7 +111,8 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           Tolerances(solution=settings.solution_tolerance), pool=pool,
                           part_timeout_s=settings.part_timeout_s,
                           slots=shared.workers if shared is not None else None,
-                          store=shared.store if shared is not None else None)
+                          store=shared.store if shared is not None else None,
+                          grading=shared.grading if shared is not None else GradingPool(settings.workers))
     ctx = FlowContext(backend, evaluator, settings, writer)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) * 2 + settings.workers + 2)
@@ -148,6 +150,8 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                 await asyncio.gather(pool_start, return_exceptions=True)
             if own_pool and pool is not None:
                 await pool.close()
+            if shared is None and evaluator.grading is not None:
+                await asyncio.to_thread(evaluator.grading.close)
             if own_backend:
                 await backend.aclose()
             else:

@@ -1,5 +1,5 @@
-"""What the concurrent runs of one sweep share: the worker slots, the fork server, the reference
-store and the live display.
+"""What the concurrent runs of one sweep share: the worker slots, the fork server, the grading
+pool and the reference store.
 
 A run alone makes its own (``run_benchmark`` without ``shared``). Runs of a sweep that make their
 own would each size their workers to the machine and together oversubscribe it N times, boot N
@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from meceng.progress import Advance
 from meceng.tools.warm import WarmPool
 
+from .grading import GradingPool
 from .store import ReferenceStore
 
 #: (tasks to do, title) -> a context yielding ``advance(success, tokens)`` per finished task
@@ -30,3 +31,4 @@ class SharedServices:
     workers: asyncio.Semaphore
     pool: WarmPool | None = None
     store: ReferenceStore | None = None
+    grading: GradingPool | None = None

@@ -1,0 +1,50 @@
+"""A process pool beside the workers for the CPU work a task needs after its programs ran:
+grading (the level 1-2 chain, the part metrics) and the viewer's traces.
+
+In threads of the parent this work held the GIL: the parent spent ~40-70 ms of its own CPU per
+task serially, so two workers gave 1.54x the tasks per second of one where the machine gives
+2.11x, and a 16-core server would grade on one core. In a pool of processes it runs where the
+cores are; the parent keeps only what must be in one place (scheduling, the journal). Started
+with the ``forkserver`` method: the parent has threads and imported Exudyn, a plain fork of it is
+not safe. The executions go to the pool pickled (arrays are copied, a few hundred KB a task).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import multiprocessing
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor
+from functools import partial
+from typing import Any, TypeVar
+
+T = TypeVar("T")
+
+
+def _warm() -> None:
+    """Import what grading needs once per pool process. PyMeshLab is imported by the first part
+    graded, on the pool process's main thread as it must be (``meceng.eval.parts.load_mesh_library``)."""
+    import meceng.eval.chain
+    import meceng.pipeline.traces  # noqa: F401
+
+
+class GradingPool:
+    """``await pool.run(fn, *args)`` runs a picklable pure function in one of ``processes``."""
+
+    def __init__(self, processes: int) -> None:
+        self.processes = processes
+        self._executor = ProcessPoolExecutor(processes, mp_context=multiprocessing.get_context("forkserver"),
+                                             initializer=_warm)
+
+    async def run(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+        return await asyncio.get_running_loop().run_in_executor(self._executor, partial(fn, *args, **kwargs))
+
+    def close(self) -> None:
+        self._executor.shutdown(wait=True, cancel_futures=True)
+
+
+async def offload(pool: GradingPool | None, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """``fn`` in the grading pool when there is one, else on a thread of this process."""
+    if pool is not None:
+        return await pool.run(fn, *args, **kwargs)
+    return await asyncio.to_thread(fn, *args, **kwargs)
