@@ -6,6 +6,10 @@ from __future__ import annotations
 
 import asyncio
 import json
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -19,6 +23,7 @@ from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks import default_registry
 
 ONLY = ("3", "11")
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def job(name: str, model: str, hosts: tuple[str, ...], out: Path = Path("runs"), backend: str = "ollama",
@@ -103,3 +108,36 @@ async def test_verdicts_equal_with_and_without_store_and_concurrency(tmp_path: P
     assert sorted(p.name for p in store.rglob("*.pkl")) == entries  # nothing made again
     for results in (fresh, reused):
         assert [comparable(Path(r["run"])) for r in results] == alone
+
+
+def start_sweep(out: Path) -> subprocess.Popen[str]:
+    args = ["--model", "gold", "--only", "1,2,3,4,9,11", "--variations", "2", "--select-template", "CI1",
+            "--select-template", "CI2", "--out", str(out), "--no-progress"]
+    return subprocess.Popen([sys.executable, str(ROOT / "scripts" / "sweep.py"), *args], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+
+
+def lines(folder: Path) -> int:
+    return sum(p.read_bytes().count(b"\n") for p in folder.glob("*/journal.jsonl"))
+
+
+def test_a_killed_or_interrupted_sweep_resumes_every_run(tmp_path: Path) -> None:
+    straight = start_sweep(tmp_path / "straight")
+    assert straight.wait(timeout=600) == 0, straight.stderr.read() if straight.stderr else ""
+    expected = sorted(p.parent.name for p in (tmp_path / "straight").glob("*/run.json"))
+    assert len(expected) == 2
+    out = tmp_path / "killed"
+    for stop, after in ((signal.SIGKILL, 3), (signal.SIGINT, 10)):
+        proc = start_sweep(out)
+        deadline = time.monotonic() + 300
+        while lines(out) < after and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.02)
+        proc.send_signal(stop)
+        proc.wait(timeout=120)
+    assert not all((out / name / "run.json").exists() for name in expected)
+    final = start_sweep(out)
+    assert final.wait(timeout=600) == 0, final.stderr.read() if final.stderr else ""
+    for name in expected:
+        assert comparable(out / name / "run.json") == comparable(tmp_path / "straight" / name / "run.json")
+        assert not (out / name / ".lock").exists()
+    assert lines(out) == lines(tmp_path / "straight")  # no finished task was done again
