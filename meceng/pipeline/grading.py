@@ -6,7 +6,10 @@ task serially, so two workers gave 1.54x the tasks per second of one where the m
 2.11x, and a 16-core server would grade on one core. In a pool of processes it runs where the
 cores are; the parent keeps only what must be in one place (scheduling, the journal). Started
 with the ``forkserver`` method: the parent has threads and imported Exudyn, a plain fork of it is
-not safe. The executions go to the pool pickled (arrays are copied, a few hundred KB a task).
+not safe. The executions go to the pool pickled (arrays are copied, a few hundred KB a task). Like
+every non-fork start method, the pool's processes import a script that started the parent
+(``python some_script.py``) as ``__mp_main__``: a script that grades must keep its work under
+``if __name__ == "__main__"`` (``python -m meceng.cli`` is not imported again).
 """
 
 from __future__ import annotations
