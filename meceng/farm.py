@@ -180,13 +180,17 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
     rank = {job.name: k for k, job in enumerate(jobs)}
     screen = SweepDisplay(jobs, display)
     t0 = time.perf_counter()
+    warming: asyncio.Future[None] | None = None
     with screen.live():
         try:
+            warming = asyncio.ensure_future(grading.warm())  # boots while the first runs start
             groups = server_groups(jobs)
             await asyncio.gather(*(_drive(group, shared, servers, rank, screen, results) for group in groups))
         finally:
             if pool is not None:
                 await pool.close()
+            if warming is not None:
+                await asyncio.gather(warming, return_exceptions=True)
             await asyncio.to_thread(grading.close)
     log.info("sweep finished", runs=len(jobs), wall_s=time.perf_counter() - t0,
              references_made=shared.store.made if shared.store else None,

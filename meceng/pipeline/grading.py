@@ -24,6 +24,9 @@ from typing import Any, TypeVar
 T = TypeVar("T")
 
 
+PRELOAD = ("meceng.eval.chain", "meceng.pipeline.traces", "meceng.pipeline.rundir")
+
+
 def _warm() -> None:
     """Import what grading needs once per pool process. PyMeshLab is imported by the first part
     graded, on the pool process's main thread as it must be (``meceng.eval.parts.load_mesh_library``)."""
@@ -36,8 +39,16 @@ class GradingPool:
 
     def __init__(self, processes: int) -> None:
         self.processes = processes
-        self._executor = ProcessPoolExecutor(processes, mp_context=multiprocessing.get_context("forkserver"),
-                                             initializer=_warm)
+        context = multiprocessing.get_context("forkserver")
+        # the server imports these once and the pool's processes fork from it warm ("__main__": a
+        # script that started us is imported there, not again in every pool process)
+        context.set_forkserver_preload(["__main__", *PRELOAD])
+        self._executor = ProcessPoolExecutor(processes, mp_context=context, initializer=_warm)
+
+    async def warm(self) -> None:
+        """Start every process now (the first start boots the fork server: ~1 s of imports), so
+        that a run's first grading does not wait for it; a run calls this while the LLM answers."""
+        await asyncio.gather(*(self.run(len, ()) for _ in range(self.processes)))
 
     async def run(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
         return await asyncio.get_running_loop().run_in_executor(self._executor, partial(fn, *args, **kwargs))

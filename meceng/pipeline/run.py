@@ -119,6 +119,8 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
     log_handler = attach_run_log(run_dir / "log.jsonl")
     if pool is not None:
         pool_start = asyncio.ensure_future(pool.start())  # the fork server boots while the LLM works
+    if shared is None and evaluator.grading is not None:
+        grading_start = asyncio.ensure_future(evaluator.grading.warm())  # so does the grading pool
     log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(kept), model=settings.llm.model)
 
     if progress is None:
@@ -151,6 +153,7 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
             if own_pool and pool is not None:
                 await pool.close()
             if shared is None and evaluator.grading is not None:
+                await asyncio.gather(grading_start, return_exceptions=True)
                 await asyncio.to_thread(evaluator.grading.close)
             if own_backend:
                 await backend.aclose()

@@ -71,6 +71,24 @@ def gpu_telemetry() -> list[dict[str, str]]:
     return [dict(zip(keys, (p.strip() for p in line.split(",")), strict=False)) for line in out.splitlines()]
 
 
+def save_programs(run_dir: Path, instance: TaskInstance, code: str | None) -> dict[str, str]:
+    """Both programs of a task as files with a header (the description wrapped: ~4 ms a task, so
+    the flow runs this in the grading pool). Returns their paths relative to ``run_dir``."""
+    folder = run_dir / "programs" / instance.slug
+    folder.mkdir(parents=True, exist_ok=True)
+    stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
+    reference = folder / f"{stem}_reference.py"
+    write_atomic(reference, instance.reference_program)
+    files = {"reference": str(reference.relative_to(run_dir))}
+    if code is not None:
+        generated = folder / f"{stem}_generated.py"
+        header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
+                                instance.description)
+        write_atomic(generated, f"{header}\n{code}")
+        files["generated"] = str(generated.relative_to(run_dir))
+    return files
+
+
 class RunWriter:
     """The run directory: journal.jsonl as tasks finish, programs/, and run.json at the end."""
 
@@ -87,21 +105,6 @@ class RunWriter:
         folder = self.run_dir / "parts"
         folder.mkdir(parents=True, exist_ok=True)
         return folder / f"{safe_name(instance.key.replace('/', '--'))}.npz"
-
-    def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
-        folder = self.run_dir / "programs" / instance.slug
-        folder.mkdir(parents=True, exist_ok=True)
-        stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
-        reference = folder / f"{stem}_reference.py"
-        write_atomic(reference, instance.reference_program)
-        files = {"reference": str(reference.relative_to(self.run_dir))}
-        if code is not None:
-            generated = folder / f"{stem}_generated.py"
-            header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
-                                    instance.description)
-            write_atomic(generated, f"{header}\n{code}")
-            files["generated"] = str(generated.relative_to(self.run_dir))
-        return files
 
     def append(self, record: dict[str, Any]) -> None:
         """One line per finished task, on disk before this returns (safe from threads)."""
