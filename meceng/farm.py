@@ -63,9 +63,18 @@ class SweepJob:
 
     @property
     def hosts(self) -> tuple[str, ...]:
+        """The servers this run uses. A hosted API is a server per model (its limits are per model
+        and it swaps nothing): two models on api.openai.com go side by side, not one after another."""
         if self.settings.llm.backend == "gold":
             return ()
-        return tuple(h.rstrip("/") for h in self.settings.llm.hosts)
+        hosted = self.settings.llm.backend == "anthropic" or any(
+            "api.openai.com" in h for h in self.settings.llm.hosts)
+        return tuple(h.rstrip("/") + (f"#{self.model}" if hosted else "") for h in self.settings.llm.hosts)
+
+    def slots(self, servers: dict[str, PrioritySlots]) -> dict[str, PrioritySlots]:
+        """This run's endpoints (by host) to the sweep's slots of each server."""
+        return {h.rstrip("/"): servers.setdefault(key, PrioritySlots(self.settings.llm.batch_size))
+                for h, key in zip(self.settings.llm.hosts, self.hosts, strict=True)}
 
 
 def server_groups(jobs: list[SweepJob]) -> list[list[SweepJob]]:
@@ -253,7 +262,7 @@ async def _one(job: SweepJob, shared: SharedServices, servers: dict[str, Priorit
     try:
         backend = make_backend(settings.llm)
         if isinstance(backend, EndpointBackend):
-            backend.share_slots(servers, rank)
+            backend.share_slots(job.slots(servers), rank)
         path = await run_benchmark(settings, backend=backend, shared=shared,
                                    progress=functools.partial(screen.run_rows, job))
     except RunBusy as exc:

@@ -40,6 +40,12 @@ def test_runs_sharing_a_server_are_one_group_with_each_models_runs_together() ->
             job("m4-c", "m4", ("http://c",)), job("gold", "gold", ("x",), backend="gold")]
     groups = [[j.name for j in g] for g in server_groups(jobs)]
     assert sorted(groups) == sorted([["m1-a", "m1-a-again", "m3-ac", "m4-c"], ["m2-b"], ["gold"]])
+    hosted = [job("gpt-a", "gpt-a", ("https://api.openai.com/v1",), backend="openai"),
+              job("gpt-b", "gpt-b", ("https://api.openai.com/v1",), backend="openai"),
+              job("gpt-a-again", "gpt-a", ("https://api.openai.com/v1",), backend="openai"),
+              job("claude", "claude", ("https://api.anthropic.com",), backend="anthropic")]
+    groups = [[j.name for j in g] for g in server_groups(hosted)]  # a hosted API is a server per model
+    assert sorted(groups) == [["claude"], ["gpt-a", "gpt-a-again"], ["gpt-b"]]
 
 
 def gold_responder(log: list[tuple[str, str, int]], latency: float) -> Any:
