@@ -10,6 +10,10 @@
    max(LLM-only time, evaluation-only time);
 5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
    realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory.
+6. a sweep (``bench_farm.py``): 4 models on 4 one-slot servers at a fixed latency, the sweep's wall
+   over the longest single run's wall;
+7. the reference store: a 4-model level-3a sweep's evaluation CPU with the store over without;
+8. ``rescore`` of a 1000-task gold run, grading on the parent's threads against the grading pool.
 
     python scripts/bench.py [--json FILE] [--quick]
 """
@@ -209,8 +213,8 @@ async def farm_figures(quick: bool) -> dict[str, object]:
     """6-8: a sweep of 4 models on 4 servers, the reference store, rescore with and without the
     grading pool (``bench_farm.py``)."""
     cores = os.cpu_count() or 1
-    conc = await bench_farm.concurrency(0.3, 1 if quick else 2, cores)
-    print(f"6. sweep: 4 models on 4 one-slot servers -> sweep wall / longest single run "
+    conc = await bench_farm.concurrency(1.0, 1, cores)
+    print(f"6. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
           f"{conc['sweep_over_longest_run']:.3f}", flush=True)
     store = await bench_farm.store_cpu(1, cores)
     print(f"7. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
