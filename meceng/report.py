@@ -30,10 +30,12 @@ from meceng.eval.report import (
     flexible_table,
     flexible_timing_table,
     load_runs,
+    repair_table,
     series,
     stage_table,
     thinking_table,
     token_cost_table,
+    tools_contribution,
     topology_cause_table,
 )
 from meceng.eval.topology import CAUSES as TOPOLOGY_CAUSES
@@ -281,6 +283,21 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
         md, ht = _table(["run", "n", "first answer (%)", "after the loop (%)", "uplift (points)",
                          "rounds per solved", "tokens per solved", "tool calls"], agent_rows)
         sections.append(("Self-validating agent", md, ht, None))
+
+    repair_rows = repair_table(runs)
+    if repair_rows:
+        labels = sorted({label for row in repair_rows for label in row["labels"]})
+        md, ht = _table(["run", "tools", "repaired (%)", *labels],
+                        [[row["run"], "on" if row["tools"] else "off", row["overall"].text(),
+                          *(row["labels"][k].text() if k in row["labels"] else "–" for k in labels)]
+                         for row in repair_rows])
+        sections.append(("Repair benchmark: drafts repaired, per fault", md, ht, None))
+        contribution = tools_contribution(repair_rows)
+        if contribution:
+            md, ht = _table(["model", "with tools (%)", "without (%)", "the tools' contribution (points)"],
+                            [[c["model"], c["with"].text(), c["without"].text(),
+                              "–" if c["points"] is None else f"{c['points']:+.1f}"] for c in contribution])
+            sections.append(("Repair benchmark: what the tools are worth", md, ht, None))
 
     intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
              "Wilson interval in brackets; infrastructure failures are left out of the rates.")

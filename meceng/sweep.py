@@ -45,7 +45,8 @@ class ModelSpec:
     """A model as a sweep runs it. ``think_off``/``think_on`` are what the grid's thinking axis
     means for this model (gpt-oss: reasoning "low" and "medium", paper Table 3);
     ``api_defaults`` sends neither temperature nor seed (the hosted models "with default API
-    settings"); prices are USD per million tokens, for the report's cost column."""
+    settings"); ``vision``: the model takes images (the agent loop's pictures); prices are USD per
+    million tokens, for the report's cost column."""
 
     name: str
     backend: str = "ollama"
@@ -58,6 +59,7 @@ class ModelSpec:
     think_on: bool | str = True
     api_defaults: bool = False
     api_key_env: str | None = None
+    vision: bool = False
     price_prompt: float | None = None
     price_completion: float | None = None
 
@@ -128,7 +130,8 @@ class GridPoint:
                            temperature=0.0 if self.temperature is None else self.temperature,
                            think=self.think, num_ctx=num_ctx, num_predict=num_predict,
                            batch_size=self.model.batch_size, timeout_s=llm_timeout_s,
-                           api_defaults=self.default_sampling, api_key_env=self.model.api_key_env)
+                           api_defaults=self.default_sampling, api_key_env=self.model.api_key_env,
+                           vision=self.model.vision)
 
     @property
     def name(self) -> str:
@@ -137,6 +140,8 @@ class GridPoint:
                 f"{self.code_template}_L{'-'.join(self.levels)}_v{self.variations}_s{self.seed}")
         if self.only:
             text += "_only-" + "-".join(self.only)
+        if self.model.vision:  # only then: the folders of earlier sweeps keep their names
+            text += "_vision"
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
 
 
@@ -165,6 +170,13 @@ GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
 
+def _only(value: Any) -> tuple[str, ...]:
+    """A spec's ``only``: task keys, each one a task model (a typo must not shrink a study)."""
+    only = tuple(str(x) for x in _tuple(value))
+    default_registry().check(only)
+    return only
+
+
 def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tuple[ModelSpec, ...]) -> Study:
     grid = {**defaults.get("grid", {}), **data.get("grid", {})}
     _check_keys(f"study {name} grid", grid, GRID_KEYS)
@@ -176,7 +188,7 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
         select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
         code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
         levels=tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"]))),
-        only=tuple(str(x) for x in _tuple(merged.get("only", []))),
+        only=_only(merged.get("only", [])),
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
         description=str(data.get("description", "")),
     )

@@ -9,11 +9,13 @@
 4. pipelining: wall time of a run with simulated LLM latency divided by
    max(LLM-only time, evaluation-only time);
 5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
-   realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory.
-6. a sweep (``bench_farm.py``): 4 models on 4 one-slot servers at a fixed latency, the sweep's wall
+   realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory;
+6. the harness's CPU per request through the OpenAI backend against a real server (llama.cpp's,
+   ``bench_real_server.py``, needs the ``servers`` extra) beside the fake one;
+7. a sweep (``bench_farm.py``): 4 models on 4 one-slot servers at a fixed latency, the sweep's wall
    over the longest single run's wall;
-7. the reference store: a 4-model level-3a sweep's evaluation CPU with the store over without;
-8. ``rescore`` of a 1000-task gold run, grading on the parent's threads against the grading pool.
+8. the reference store: a 4-model level-3a sweep's evaluation CPU with the store over without;
+9. ``rescore`` of a 1000-task gold run, grading on the parent's threads against the grading pool.
 
     python scripts/bench.py [--json FILE] [--quick]
 """
@@ -34,6 +36,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import bench_farm
+import bench_real_server
 import bench_scale
 from fake_ollama import FakeOllama, chat_reply
 
@@ -194,12 +197,15 @@ async def main_async(quick: bool) -> dict[str, object]:
     print("5. server scale:", flush=True)
     scale = await asyncio.to_thread(bench_scale.server_scale, scale_args)
     print("5. " + bench_scale.report(scale), flush=True)
+    real = await asyncio.to_thread(bench_real_server.real_server_overhead, 12 if quick else 24)
+    print("6. " + bench_real_server.report(real), flush=True)
     results.update(
         cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
         hardware_scaling=tp["hardware_scaling"],
         scheduler_efficiency=sched, pipelining_ratio=pipe["pipelining_ratio"], cores=cores,
         server_scale=scale, run_over_llm_only=scale["run_over_llm_only"],
         parent_cpu_ms_per_task=scale["parent_cpu_ms_per_task"], parent_peak_rss_mb=scale["parent_peak_rss_mb"],
+        real_server_overhead=real,
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
     )
@@ -210,17 +216,17 @@ async def main_async(quick: bool) -> dict[str, object]:
 
 
 async def farm_figures(quick: bool) -> dict[str, object]:
-    """6-8: a sweep of 4 models on 4 servers, the reference store, rescore with and without the
+    """7-9: a sweep of 4 models on 4 servers, the reference store, rescore with and without the
     grading pool (``bench_farm.py``)."""
     cores = os.cpu_count() or 1
     conc = await bench_farm.concurrency(1.0, 1, cores)
-    print(f"6. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
+    print(f"7. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
           f"{conc['sweep_over_longest_run']:.3f}", flush=True)
     store = await bench_farm.store_cpu(1, cores)
-    print(f"7. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
+    print(f"8. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
           f"{store['store_cpu_ratio']:.3f}", flush=True)
     rescore = await bench_farm.rescore_figures(2 if quick else 20, cores)
-    print(f"8. rescore of a {rescore['tasks']}-task run: grading in the parent's threads "
+    print(f"9. rescore of a {rescore['tasks']}-task run: grading in the parent's threads "
           f"{rescore['threads_s']:.0f} s, in the grading pool {rescore['pool_s']:.0f} s", flush=True)
     return {"sweep_over_longest_run": conc["sweep_over_longest_run"], "store_cpu_ratio": store["store_cpu_ratio"],
             "rescore": rescore, "details": {"sweep": conc, "store": store}}

@@ -1,6 +1,7 @@
 #!/usr/bin/env python
 """A fake LLM server for the throughput benchmark, in its own process so that none of its CPU is
-counted as the harness's: Ollama's ``/api/chat`` wire format, ``--slots`` requests served at once
+counted as the harness's: Ollama's ``/api/chat`` wire format (and, with ``--fixed-latency``,
+OpenAI's ``/v1/chat/completions``), ``--slots`` requests served at once
 (more wait in the server's queue, as with continuous batching at its limit), and a latency drawn per
 request from a realistic distribution — selection short, code long, a heavy tail. It answers with the
 ground truth, so the harness grades every task as it would a perfect model.
@@ -61,13 +62,18 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
         by_description = sorted(instances, key=lambda i: -len(i.description))
 
     ok = json.dumps(json.loads(_reply("bench", "", "ok").body)).encode()  # type: ignore[arg-type]
+    ok_openai = json.dumps({  # the same answer on the OpenAI-compatible route
+        "id": "chatcmpl-bench", "object": "chat.completion", "created": 0, "model": "bench",
+        "choices": [{"index": 0, "message": {"role": "assistant", "content": "ok"}, "finish_reason": "stop"}],
+        "usage": {"prompt_tokens": 1, "completion_tokens": 1, "total_tokens": 2}}).encode()
 
     async def chat(request: web.Request) -> web.Response:
         raw = await request.read()
         if fixed_latency is not None:  # as lean as a server can be: the client's cost is what is measured
             async with gate:
                 await asyncio.sleep(fixed_latency)
-            return web.Response(body=ok, content_type="application/json")
+            body = ok_openai if request.path.startswith("/v1/") else ok
+            return web.Response(body=body, content_type="application/json")
         body = json.loads(raw)
         prompt = body["messages"][-1]["content"]
         instance = next((i for i in by_description if i.description in prompt), None)
@@ -82,6 +88,7 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
 
     app = web.Application(client_max_size=16 * 2**20)
     app.router.add_post("/api/chat", chat)
+    app.router.add_post("/v1/chat/completions", chat)  # OpenAI's wire format, answered only with --fixed-latency
     return app
 
 

@@ -31,6 +31,7 @@ from rich.table import Table
 
 from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
+from meceng.cli.arguments import parse_only
 from meceng.farm import SweepJob, run_sweep
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
@@ -108,6 +109,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--host", "--base-url", action="append", dest="host",
                    help="server URL (Ollama, or an OpenAI-compatible .../v1); repeat for several")
     p.add_argument("--api-defaults", action="store_true", help="send neither temperature nor seed (with --model)")
+    p.add_argument("--vision", action="store_true",
+                   help="the models take images: pictures for the agent loop (with --model; see meceng run --help)")
     p.add_argument("--temperature", action="append", type=parse_temperature,
                    help="a number, or 'default' for the model's own; repeatable")
     p.add_argument("--think", action="append", type=parse_think)
@@ -143,9 +146,9 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
         backend = args.backend or "ollama"
         hosts = tuple(args.host) if args.host else (DEFAULT_HOSTS[backend],)
         models = tuple(ModelSpec(name=m, backend="gold" if m == "gold" else backend, hosts=hosts,
-                                 batch_size=args.batch_size or 4,
+                                 batch_size=args.batch_size or 4, vision=args.vision,
                                  api_defaults=args.api_defaults or backend == "anthropic") for m in args.model)
-    only = tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()) if args.only else None
+    only = parse_only(args.only) if args.only else None
     changed = []
     for study in studies:
         study_models = models

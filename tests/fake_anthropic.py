@@ -1,5 +1,8 @@
 """Anthropic's Messages API as a fake on 127.0.0.1: the answer and error bodies, status codes and
-headers the real API sends, and its key check (401 ``authentication_error`` without a valid key).
+headers the real API sends, its key check (401 ``authentication_error`` without a valid key) and
+its checks of ``messages`` (400 ``invalid_request_error``): every ``tool_use`` answered by a
+``tool_result`` in the next user turn, results only for the calls of the turn before, a result's
+content a string or text and base64 ``image`` blocks whose data is a picture of its media type.
 The routes and the scripted responder are FakeOllama's."""
 
 from __future__ import annotations
@@ -8,7 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from aiohttp import web
-from fake_ollama import FakeOllama
+from fake_ollama import SIGNATURES, FakeOllama, picture_problem
 
 
 def anthropic_reply(content: str = "", *, thinking: str | None = None, tool_uses: tuple[dict[str, Any], ...] = (),
@@ -35,6 +38,51 @@ def anthropic_error(status: int, kind: str, message: str) -> tuple[int, dict[str
                     "request_id": "req_01FAKE"}, {"request-id": "req_01FAKE"}
 
 
+def anthropic_problem(body: dict[str, Any]) -> str | None:
+    """What ``/v1/messages`` refuses in ``messages``, as the API words it where it matters."""
+    calls: list[str] = []  # the tool_use ids of the assistant turn before
+    for n, message in enumerate(body.get("messages") or ()):
+        role, content = message.get("role"), message.get("content")
+        if role not in ("user", "assistant"):
+            return f"messages.{n}.role: Input should be 'user' or 'assistant'"
+        blocks = content if isinstance(content, list) else []
+        results = [b.get("tool_use_id") for b in blocks if b.get("type") == "tool_result"]
+        if calls and (role != "user" or set(calls) - set(results)):
+            return (f"messages.{n}: `tool_use` ids were found without `tool_result` blocks immediately after: "
+                    f"{', '.join(sorted(set(calls) - set(results)))}")
+        if set(results) - set(calls):
+            return f"messages.{n}: unexpected `tool_use_id` found in `tool_result` blocks: {sorted(set(results))}"
+        for k, block in enumerate(blocks):
+            problem = _block_problem(block, ("text", "image", "tool_result") if role == "user" else
+                                     ("text", "thinking", "tool_use"))
+            if problem:
+                return f"messages.{n}.content.{k}: {problem}"
+        calls = [b["id"] for b in blocks if b.get("type") == "tool_use"] if role == "assistant" else []
+    return None
+
+
+def _block_problem(block: dict[str, Any], kinds: tuple[str, ...]) -> str | None:
+    kind = block.get("type")
+    if kind not in kinds:
+        return f"unexpected block type {kind!r}"
+    if kind == "text" and not block.get("text"):
+        return "text content blocks must be non-empty"
+    if kind == "image":
+        source = block.get("source") or {}
+        if source.get("type") != "base64" or source.get("media_type") not in SIGNATURES:
+            return "image source must be {type: base64, media_type: image/jpeg|png|gif|webp, data}"
+        problem = picture_problem(source.get("data"), (source["media_type"],))
+        return f"image: {problem}" if problem else None
+    if kind == "tool_result" and isinstance(block.get("content"), list):
+        for k, inner in enumerate(block["content"]):
+            problem = _block_problem(inner, ("text", "image"))
+            if problem:
+                return f"content.{k}: {problem}"
+    elif kind == "tool_result" and not isinstance(block.get("content", ""), str):
+        return "tool_result content must be a string or a list of text and image blocks"
+    return None
+
+
 @dataclass
 class FakeAnthropic(FakeOllama):
     key: str = "sk-ant-test"
@@ -45,3 +93,10 @@ class FakeAnthropic(FakeOllama):
             status, body, headers = anthropic_error(401, "authentication_error", "invalid x-api-key")
             return web.json_response(body, status=status, headers=headers)
         return None
+
+    def check(self, path: str, body: dict[str, Any]) -> web.StreamResponse | None:
+        problem = anthropic_problem(body) if path == "/v1/messages" else None
+        if problem is None:
+            return super().check(path, body)
+        status, error, headers = anthropic_error(400, "invalid_request_error", problem)
+        return web.json_response(error, status=status, headers=headers)

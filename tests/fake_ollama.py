@@ -2,12 +2,20 @@
 
 The tests script its behaviour with a ``responder(body) -> (status, json, headers)`` callable;
 the server records every request body it received. It binds an ephemeral port on loopback only.
+Before the responder sees a request, the server refuses (400, in the API's own error shape) what
+the real API refuses: on ``/api/chat`` an unknown role or an ``images`` entry that is no base64
+picture; on the OpenAI-compatible route a tool answer that does not directly follow the assistant
+turn that called it, an unanswered call, a tool message with anything but text, an image part that
+is not a base64 data URL of a picture of its media type.
 """
 
 from __future__ import annotations
 
 import asyncio
+import base64
+import binascii
 import json
+import re
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -38,6 +46,89 @@ def chat_reply(content: str, model: str = "fake", done_reason: str = "stop", thi
     }
 
 
+SIGNATURES = {"image/png": b"\x89PNG\r\n\x1a\n", "image/jpeg": b"\xff\xd8\xff", "image/gif": b"GIF8",
+              "image/webp": b"RIFF"}
+DATA_URL = re.compile(r"data:(?P<media_type>[\w/+.-]+);base64,(?P<data>.*)", re.DOTALL)
+
+
+def picture_problem(data: Any, media_types: tuple[str, ...] = tuple(SIGNATURES)) -> str | None:
+    """What is wrong with a base64 picture that should be of one of ``media_types``; None: nothing."""
+    if not isinstance(data, str):
+        return "image data must be a base64 string"
+    try:
+        raw = base64.b64decode(data, validate=True)
+    except (binascii.Error, ValueError):
+        return "image data is not valid base64"
+    if not any(raw.startswith(SIGNATURES[m]) for m in media_types):
+        return f"image data is not {' or '.join(media_types)}"
+    return None
+
+
+def ollama_problem(body: dict[str, Any]) -> str | None:
+    """What ``/api/chat`` refuses: a role it does not know, images that are not base64 pictures."""
+    for n, message in enumerate(body.get("messages") or ()):
+        if message.get("role") not in ("system", "user", "assistant", "tool"):
+            return f"messages[{n}]: invalid role {message.get('role')!r}"
+        if not isinstance(message.get("content", ""), str):
+            return f"messages[{n}]: content must be a string"
+        for image in message.get("images") or ():
+            problem = picture_problem(image, ("image/png", "image/jpeg"))
+            if problem:
+                return f"messages[{n}]: {problem}"
+    return None
+
+
+def openai_problem(body: dict[str, Any]) -> str | None:
+    """What Chat Completions refuses in ``messages``: tool answers out of place or unanswered
+    calls, content parts a role does not take, image parts that are not pictures."""
+    awaiting: list[str] = []  # the calls of the last assistant turn not answered yet
+    after_calls = False  # the previous message is that turn or one of its answers
+    for n, message in enumerate(body.get("messages") or ()):
+        role = message.get("role")
+        if role == "tool":
+            if not after_calls or message.get("tool_call_id") not in awaiting:
+                return (f"messages[{n}]: messages with role 'tool' must be a response to a preceding message "
+                        "with 'tool_calls'")
+            awaiting.remove(message["tool_call_id"])
+        elif awaiting:
+            return ("An assistant message with 'tool_calls' must be followed by tool messages responding to each "
+                    f"'tool_call_id'. The following tool_call_ids did not have response messages: {awaiting}")
+        if role not in ("system", "developer", "user", "assistant", "tool"):
+            return f"messages[{n}]: invalid role {role!r}"
+        problem = _parts_problem(message.get("content"), ("text", "image_url") if role == "user" else ("text",))
+        if problem:
+            return f"messages[{n}] ({role}): {problem}"
+        if role == "assistant":
+            awaiting = [call["id"] for call in message.get("tool_calls") or ()]
+        after_calls = role == "tool" or bool(awaiting)
+    if awaiting:
+        return f"tool_call_ids without response messages: {awaiting}"
+    return None
+
+
+def _parts_problem(content: Any, kinds: tuple[str, ...]) -> str | None:
+    """A message's content: a string, or parts of the kinds its role takes (images as data URLs)."""
+    if content is None or isinstance(content, str):
+        return None
+    if not isinstance(content, list):
+        return "content must be a string or a list of content parts"
+    for part in content:
+        kind = part.get("type")
+        if kind not in kinds:
+            return f"content part type {kind!r} is not supported here (only {', '.join(kinds)})"
+        if kind == "text" and not isinstance(part.get("text"), str):
+            return "a text part needs its text"
+        if kind == "image_url":
+            url = (part.get("image_url") or {}).get("url")
+            found = DATA_URL.fullmatch(url) if isinstance(url, str) else None
+            if found is None or found["media_type"] not in SIGNATURES:
+                return "image_url.url must be a data URL of an image (data:image/png;base64,...)"
+            problem = picture_problem(found["data"], (found["media_type"],))
+            if problem:
+                return problem
+    return None
+
+
 @dataclass
 class FakeOllama:
     responder: Responder
@@ -57,6 +148,8 @@ class FakeOllama:
         self.requests.append(body)
         self.headers.append({k.lower(): v for k, v in request.headers.items()})
         refused = self.refuse(request)
+        if refused is None:
+            refused = self.check(request.path, body)
         if refused is not None:
             return refused
         self._in_flight += 1
@@ -78,6 +171,15 @@ class FakeOllama:
 
     def refuse(self, request: web.Request) -> web.StreamResponse | None:
         """An answer given before the responder sees the request (authentication); None: go on."""
+        return None
+
+    def check(self, path: str, body: dict[str, Any]) -> web.StreamResponse | None:
+        """The 400 the real API gives a request it refuses; None: the request is well formed."""
+        if path == "/api/chat" and (problem := ollama_problem(body)):
+            return web.json_response({"error": problem}, status=400)
+        if path == "/v1/chat/completions" and (problem := openai_problem(body)):
+            return web.json_response({"error": {"message": problem, "type": "invalid_request_error",
+                                                "param": "messages", "code": None}}, status=400)
         return None
 
     async def __aenter__(self) -> FakeOllama:

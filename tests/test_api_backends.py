@@ -6,18 +6,31 @@ tool calls, retries, truncation, and no API key in any file a run writes."""
 from __future__ import annotations
 
 import asyncio
+import base64
 import json
 import os
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import pytest
-from fake_anthropic import FakeAnthropic, anthropic_error, anthropic_reply
-from fake_ollama import FakeOllama, openai_reply
+from fake_anthropic import FakeAnthropic, anthropic_error, anthropic_problem, anthropic_reply
+from fake_ollama import FakeOllama, chat_reply, ollama_problem, openai_problem, openai_reply
 
 from meceng.agents.backend_anthropic import AnthropicBackend, thinking_budget
-from meceng.agents.llm import ChatRequest, LLMError, LLMSettings, user_messages
+from meceng.agents.backend_ollama import OllamaBackend
+from meceng.agents.backend_openai import OpenAIBackend
+from meceng.agents.llm import (
+    ChatRequest,
+    ChatResponse,
+    LLMError,
+    LLMSettings,
+    ToolCall,
+    assistant_message,
+    tool_message,
+    user_messages,
+)
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
@@ -181,6 +194,236 @@ async def test_openai_api_defaults_and_reasoning_tokens(tmp_path: Path, monkeypa
     assert all(h["authorization"] == "Bearer sk-openai-test" for h in server.headers)
 
 
+# ----------------------------------------------------------------------------- pictures in tool answers
+
+
+def tiny_png() -> bytes:
+    """A real 1x1 grey PNG: signature, IHDR, IDAT, IEND."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 0, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(b"\x00\x80")) + chunk(b"IEND", b""))
+
+
+PNG = base64.b64encode(tiny_png()).decode()
+SNAPSHOT = ToolCall("snapshot", {"code": "...", "t": 0.0}, id="call_1")
+SIMULATE = ToolCall("simulate", {"code": "..."}, id="call_2")
+VIEWS = "front, top, side and isometric views at t = 0"
+
+
+def conversation(*, pictures: bool) -> tuple[dict[str, Any], ...]:
+    """The agent's messages after a turn that called snapshot and simulate; with ``pictures`` the
+    snapshot's answer carries a PNG, as the loop writes it for a vision model."""
+    turn = assistant_message(ChatResponse(content="Let me look at it.", tool_calls=(SNAPSHOT, SIMULATE)))
+    return (*user_messages("Model the rotor."), turn,
+            tool_message(SNAPSHOT, VIEWS, images=(PNG,) if pictures else ()),
+            tool_message(SIMULATE, '{"stage": "solved"}'))
+
+
+def decodes_to_the_png(data: str) -> bool:
+    return base64.b64decode(data, validate=True) == tiny_png()
+
+
+def openai_answer(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+    return 200, openai_reply("done"), {}
+
+
+def ollama_answer(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+    return 200, chat_reply("done"), {}
+
+
+async def sent_messages(backend_name: str, messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
+    """The ``messages`` (Anthropic: with ``system``) a backend sent for this conversation; the fake
+    answers 400 to anything the real API refuses, which fails the call."""
+    fake, answer = {"anthropic": (FakeAnthropic, lambda body: (200, anthropic_reply("done"), {})),
+                    "openai": (FakeOllama, openai_answer), "ollama": (FakeOllama, ollama_answer)}[backend_name]
+    async with fake(answer) as server:
+        if backend_name == "anthropic":
+            backend: Any = AnthropicBackend(anthropic_settings(server.url), api_key="sk-ant-test")
+        elif backend_name == "openai":
+            backend = OpenAIBackend(LLMSettings(model="gpt-x", backend="openai", hosts=(server.url + "/v1",)))
+        else:
+            backend = OllamaBackend(LLMSettings(model="qwen3-vl", backend="ollama", hosts=(server.url,)))
+        response = await backend.chat(ChatRequest(messages, "code", "t@0"))
+        await backend.aclose()
+    assert response.content == "done" and len(server.requests) == 1
+    return server.requests[0]["messages"]
+
+
+async def test_anthropic_picture_is_an_image_block_of_its_tool_result() -> None:
+    sent = await sent_messages("anthropic", conversation(pictures=True))
+    assert [m["role"] for m in sent] == ["user", "assistant", "user"]
+    snapshot, simulate = sent[2]["content"]
+    assert snapshot["type"] == "tool_result" and snapshot["tool_use_id"] == "call_1"
+    text, image = snapshot["content"]
+    assert text == {"type": "text", "text": VIEWS}
+    assert image["type"] == "image" and image["source"]["type"] == "base64"
+    assert image["source"]["media_type"] == "image/png" and decodes_to_the_png(image["source"]["data"])
+    assert simulate == {"type": "tool_result", "tool_use_id": "call_2", "content": '{"stage": "solved"}'}
+
+
+async def test_openai_picture_follows_the_turns_tool_answers_as_an_image_url_part() -> None:
+    sent = await sent_messages("openai", conversation(pictures=True))
+    assert [m["role"] for m in sent] == ["user", "assistant", "tool", "tool", "user"]
+    assert [m["tool_call_id"] for m in sent[2:4]] == ["call_1", "call_2"]  # right after the turn that called
+    assert sent[2]["content"] == VIEWS  # a tool message: text only
+    caption, picture = sent[4]["content"]
+    assert caption["type"] == "text" and "snapshot call_1" in caption["text"]
+    assert picture["type"] == "image_url"
+    prefix, data = picture["image_url"]["url"].split(",", 1)
+    assert prefix == "data:image/png;base64" and decodes_to_the_png(data)
+
+
+async def test_ollama_picture_is_in_the_images_of_a_user_message_after_the_tool_answers() -> None:
+    sent = await sent_messages("ollama", conversation(pictures=True))
+    assert [m["role"] for m in sent] == ["user", "assistant", "tool", "tool", "user"]
+    assert [m["tool_name"] for m in sent[2:4]] == ["snapshot", "simulate"]
+    assert not any("images" in m for m in sent[:4])  # a vision template may drop a tool message's images
+    assert "snapshot" in sent[4]["content"] and len(sent[4]["images"]) == 1 and decodes_to_the_png(sent[4]["images"][0])
+
+
+# what each backend sent for the conversation without pictures before pictures existed
+WITHOUT_PICTURES = {
+    "anthropic": [
+        {"role": "user", "content": "Model the rotor."},
+        {"role": "assistant", "content": [
+            {"type": "text", "text": "Let me look at it."},
+            {"type": "tool_use", "id": "call_1", "name": "snapshot", "input": {"code": "...", "t": 0.0}},
+            {"type": "tool_use", "id": "call_2", "name": "simulate", "input": {"code": "..."}}]},
+        {"role": "user", "content": [
+            {"type": "tool_result", "tool_use_id": "call_1", "content": VIEWS},
+            {"type": "tool_result", "tool_use_id": "call_2", "content": '{"stage": "solved"}'}]}],
+    "openai": [
+        {"role": "user", "content": "Model the rotor."},
+        {"role": "assistant", "content": "Let me look at it.", "tool_calls": [
+            {"id": "call_1", "type": "function", "function": {"name": "snapshot",
+                                                              "arguments": '{"code": "...", "t": 0.0}'}},
+            {"id": "call_2", "type": "function", "function": {"name": "simulate", "arguments": '{"code": "..."}'}}]},
+        {"role": "tool", "tool_call_id": "call_1", "content": VIEWS},
+        {"role": "tool", "tool_call_id": "call_2", "content": '{"stage": "solved"}'}],
+    "ollama": [
+        {"role": "user", "content": "Model the rotor."},
+        {"role": "assistant", "content": "Let me look at it.", "tool_calls": [
+            {"function": {"name": "snapshot", "arguments": {"code": "...", "t": 0.0}}},
+            {"function": {"name": "simulate", "arguments": {"code": "..."}}}]},
+        {"role": "tool", "tool_name": "snapshot", "content": VIEWS},
+        {"role": "tool", "tool_name": "simulate", "content": '{"stage": "solved"}'}],
+}
+
+
+def png_size(data: str) -> tuple[int, int]:
+    """Width and height from a base64 PNG's IHDR (the fakes have checked its signature)."""
+    import struct
+
+    raw = base64.b64decode(data)
+    return struct.unpack(">II", raw[16:24])
+
+
+def snapshot_script(known: dict[str, Any], backend_name: str) -> Any:
+    """A vision model's answers: the components, then a ``snapshot`` of the reference program, then
+    (once the tool has answered) the reference program."""
+    def answer(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        purpose, gold = gold_answer(known, body)
+        program = next(inst for desc, inst in known.items() if desc in prompt_of(body)).reference_program
+        answered = any(m["role"] == "tool" for m in body["messages"]) or len(body["messages"]) > 1
+        if backend_name == "anthropic":
+            if purpose == "code" and not answered:
+                return 200, anthropic_reply(tool_uses=({"id": "toolu_01", "name": "snapshot",
+                                                        "input": {"code": program}},), stop_reason="tool_use"), {}
+            return 200, anthropic_reply(gold), {}
+        reply = openai_reply(gold) if backend_name == "openai" else chat_reply(gold)
+        if purpose == "code" and not answered:
+            message = reply["choices"][0]["message"] if backend_name == "openai" else reply["message"]
+            call: dict[str, Any] = {"function": {"name": "snapshot", "arguments": {"code": program}}}
+            if backend_name == "openai":
+                call = {"id": "call_1", "type": "function",
+                        "function": {"name": "snapshot", "arguments": json.dumps({"code": program})}}
+            message["content"], message["tool_calls"] = "", [call]
+        return 200, reply, {}
+    return answer
+
+
+def picture_sent(backend_name: str, body: dict[str, Any]) -> str:
+    """The one picture of the request after the snapshot, from where each API carries it."""
+    messages = body["messages"]
+    if backend_name == "anthropic":
+        (result,) = messages[-1]["content"]
+        (image,) = [b for b in result["content"] if b["type"] == "image"]
+        assert result["tool_use_id"] == "toolu_01" and image["source"]["media_type"] == "image/png"
+        return str(image["source"]["data"])
+    assert [m["role"] for m in messages[-2:]] == ["tool", "user"]
+    if backend_name == "openai":
+        (url,) = [part["image_url"]["url"] for part in messages[-1]["content"] if part["type"] == "image_url"]
+        assert url.startswith("data:image/png;base64,")
+        return str(url.removeprefix("data:image/png;base64,"))
+    (image,) = messages[-1]["images"]
+    return str(image)
+
+
+async def test_cli_vision_run_sends_the_snapshot_to_all_three_apis(tmp_path: Path) -> None:
+    """``meceng run --agent loop --vision`` as a user starts it: the model asks for a snapshot and
+    the tool's PNG reaches the fake Anthropic, OpenAI and Ollama servers in each one's form (which
+    the fakes check as the real APIs do)."""
+    held_out = "four_bar_mechanism_rigid_bodies"  # three bodies, none of the inspector's own test tasks
+    known = instances((held_out,))
+    async with (FakeAnthropic(snapshot_script(known, "anthropic"), key=SENTINEL) as claude,
+                FakeOllama(snapshot_script(known, "openai")) as gpt,
+                FakeOllama(snapshot_script(known, "ollama")) as local):
+        ran = await asyncio.gather(*(
+            cli_run(tmp_path, name, name, url, "--agent", "loop", "--vision", only=held_out)
+            for name, url in (("anthropic", claude.url), ("openai", gpt.url + "/v1"), ("ollama", local.url))))
+    for (code, output), (name, server) in zip(ran, (("anthropic", claude), ("openai", gpt), ("ollama", local)),
+                                              strict=True):
+        assert code == 0, output
+        run = json.loads((tmp_path / name / "run.json").read_text())
+        task = run["tasks"][0]
+        assert run["settings"]["llm"]["vision"] is True and task["overall"] is True, output
+        assert task["agent"]["tool_calls"] == {"snapshot": 1}
+        width, height = png_size(picture_sent(name, server.requests[-1]))
+        assert width >= 200 and height >= 200  # the drawing, not a placeholder
+
+
+@pytest.mark.parametrize("backend_name", ["anthropic", "openai", "ollama"])
+async def test_a_conversation_without_pictures_is_sent_as_before(backend_name: str) -> None:
+    sent = await sent_messages(backend_name, conversation(pictures=False))
+    assert json.dumps(sent) == json.dumps(WITHOUT_PICTURES[backend_name])
+
+
+@pytest.mark.parametrize(("check", "messages", "said"), [
+    # the picture inside the tool message, as Chat Completions does not take it
+    (openai_problem, [{"role": "assistant", "content": "", "tool_calls": [{"id": "c1"}]},
+                      {"role": "tool", "tool_call_id": "c1", "content": [
+                          {"type": "image_url", "image_url": {"url": f"data:image/png;base64,{PNG}"}}]}],
+     "not supported here"),
+    # a user message between the answers of one turn
+    (openai_problem, [{"role": "assistant", "content": "", "tool_calls": [{"id": "c1"}, {"id": "c2"}]},
+                      {"role": "tool", "tool_call_id": "c1", "content": "a"}, {"role": "user", "content": "pic"},
+                      {"role": "tool", "tool_call_id": "c2", "content": "b"}], "did not have response messages"),
+    (openai_problem, [{"role": "user", "content": [{"type": "image_url", "image_url": {"url": PNG}}]}],
+     "data URL"),
+    (openai_problem, [{"role": "user", "content": [
+        {"type": "image_url", "image_url": {"url": f"data:image/jpeg;base64,{PNG}"}}]}], "not image/jpeg"),
+    (anthropic_problem, [{"role": "assistant", "content": [{"type": "tool_use", "id": "t1"}]},
+                         {"role": "user", "content": [{"type": "tool_result", "tool_use_id": "t1", "content": [
+                             {"type": "image", "source": {"type": "base64", "media_type": "image/png",
+                                                          "data": "bm90IGEgcGljdHVyZQ=="}}]}]}],
+     "not image/png"),
+    (anthropic_problem, [{"role": "assistant", "content": [{"type": "tool_use", "id": "t1"}]},
+                         {"role": "user", "content": [{"type": "tool_result", "tool_use_id": "t1", "content": [
+                             {"type": "text", "text": ""}]}]}], "non-empty"),
+    (anthropic_problem, [{"role": "assistant", "content": [{"type": "tool_use", "id": "t1"}]},
+                         {"role": "user", "content": "the picture"}], "without `tool_result`"),
+    (ollama_problem, [{"role": "user", "content": "pic", "images": ["not base64!"]}], "base64"),
+])
+def test_the_fakes_refuse_what_the_apis_refuse(check: Any, messages: list[dict[str, Any]], said: str) -> None:
+    problem = check({"messages": messages})
+    assert problem is not None and said in problem
+
+
 async def cli_run(tmp_path: Path, name: str, backend: str, url: str, *extra: str,
                   levels: str = "1,2", only: str = "single_mass_oscillator,single_pendulum") -> tuple[int, str]:
     env = {**os.environ, "OPENAI_API_KEY": SENTINEL, "ANTHROPIC_API_KEY": SENTINEL}
@@ -258,3 +501,113 @@ def test_cli_without_key_says_so_and_writes_nothing(tmp_path: Path) -> None:
                           capture_output=True, text=True, timeout=120, env=env)
     assert proc.returncode == 2 and "ANTHROPIC_API_KEY" in proc.stderr
     assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize(("host", "fields"), [
+    ("https://api.openai.com/v1", {"max_completion_tokens"}),
+    ("https://myres.openai.azure.com/openai/v1", {"max_completion_tokens"}),
+    ("http://127.0.0.1:8000/v1", {"max_tokens", "max_completion_tokens"}),
+])
+def test_answer_limit_fields_per_server(host: str, fields: set[str]) -> None:
+    from meceng.agents.backend_openai import answer_limit_fields
+
+    sent = answer_limit_fields(host, 2048)
+    assert set(sent) == fields and set(sent.values()) == {2048}
+
+
+OVERFLOW_BODIES = [  # (body as each server words it, prompt tokens, context)
+    ({"error": {"message": "This model's maximum context length is 4096 tokens. However, you requested 5700 tokens "
+                           "(5636 in the messages, 64 in the completion). Please reduce the length of the messages "
+                           "or completion.", "type": "invalid_request_error", "code": "context_length_exceeded"}},
+     5636, 4096),
+    ({"error": {"code": 400, "message": "the request exceeds the available context size, try increasing it",
+                "type": "exceed_context_size_error", "n_prompt_tokens": 5000, "n_ctx": 4096}}, 5000, 4096),
+    ({"object": "error", "message": "'max_tokens' or 'max_completion_tokens' is too large: 2048. This model's maximum "
+                                    "context length is 4096 tokens and your request has 3000 input tokens "
+                                    "(2048 > 4096 - 3000).", "type": "BadRequestError", "code": 400}, 3000, 4096),
+    ({"object": "error", "message": "Requested token count exceeds the model's maximum context length of 8192 "
+                                    "tokens. You requested a total of 9000 tokens: 7000 tokens from the input "
+                                    "messages and 2000 tokens for the completion."}, 7000, 8192),
+]
+
+
+@pytest.mark.parametrize(("body", "prompt", "context"), OVERFLOW_BODIES)
+def test_context_overflow_is_read_from_each_servers_words(body: dict[str, Any], prompt: int, context: int) -> None:
+    from meceng.agents.backend_openai import context_exceeded
+
+    overflow = context_exceeded(400, json.dumps(body), "http://h/v1", 2048)
+    assert overflow is not None and not overflow.transient
+    assert (overflow.prompt_tokens, overflow.context, overflow.answer_limit) == (prompt, context, 2048)
+    assert f"{prompt:,} prompt tokens" in str(overflow) and f"{prompt + 2048:,} tokens" in str(overflow)
+
+
+def test_other_refusals_are_not_context_overflows() -> None:
+    from meceng.agents.backend_openai import context_exceeded
+
+    unsupported = {"error": {"message": "Unsupported value: 'temperature'", "type": "invalid_request_error"}}
+    assert context_exceeded(400, json.dumps(unsupported), "h", 64) is None
+    assert context_exceeded(500, json.dumps(OVERFLOW_BODIES[0][0]), "h", 64) is None
+
+
+async def test_prompt_over_the_context_is_said_once_kept_by_resume_and_graded_on_a_named_server(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A 400 context_length_exceeded is asked once, recorded with its numbers and left out of the
+    rates; a plain --resume keeps it (the same server would refuse it again), a resume on a server
+    the user names (--host) asks again and grades it."""
+    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.cli.commands import print_summary
+
+    known = instances(("single_mass_oscillator", "single_pendulum"))
+    pendulum_text = next(d for d, i in known.items() if i.slug == "single_pendulum")
+
+    def small_context(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        if pendulum_text in prompt_of(body):
+            return 400, OVERFLOW_BODIES[0][0], {}
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    def large_context(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        return 200, openai_reply(gold_answer(known, body)[1]), {}
+
+    only = ("single_mass_oscillator", "single_pendulum")
+    async with FakeOllama(small_context) as small:
+        llm = LLMSettings(model="m", backend="openai", hosts=(small.url + "/v1",), num_predict=64, backoff_s=0.01)
+        settings = RunSettings(llm=llm, only=only, variations=1, out=tmp_path, run_name="ctx", progress=False)
+        run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
+        refused = [b for b in small.requests if pendulum_text in prompt_of(b)]
+        assert len(refused) == 1  # a permanent refusal: not retried
+        resumed = await run_benchmark(replace(settings, resume=True), backend=OpenAIBackend(llm))
+        assert len(small.requests) == 3  # the plain resume sent nothing: that server would refuse it again
+    run = json.loads(resumed.read_text())
+    pendulum = next(t for t in run["tasks"] if t["slug"] == "single_pendulum")
+    assert pendulum["first_failure"] == "infrastructure" and pendulum["stages"] == []
+    assert pendulum["context_exceeded"] == {"prompt_tokens": 5636, "context": 4096, "answer_limit": 64,
+                                            "host": small.url + "/v1"}
+    assert "5,636 prompt tokens + 64 answer limit > 4,096 context" in pendulum["infrastructure_error"]
+    assert run["summary"]["counted"] == 1 and run["summary"]["rates"]["overall"] == 1.0
+    assert run["summary"]["context_exceeded"] == 1
+    print_summary(run_json)
+    said = capsys.readouterr().out
+    assert "did not fit the server's context of 4,096 tokens" in said and "at least 5,700 tokens" in said
+    assert "--host URL" in said and "lost to the server" not in said
+
+    async with FakeOllama(large_context) as large:
+        llm = replace(llm, hosts=(large.url + "/v1",))
+        again = replace(settings, llm=llm, resume=True, retry_overflow=True)
+        run = json.loads((await run_benchmark(again, backend=OpenAIBackend(llm))).read_text())
+    assert len(large.requests) == 2  # only the pendulum's selection and program
+    assert run["summary"]["counted"] == 2 and run["summary"]["rates"]["overall"] == 1.0
+    assert run["summary"]["context_exceeded"] == 0
+
+
+def test_resume_with_host_asks_again_what_did_not_fit(tmp_path: Path) -> None:
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import resumed_settings
+
+    settings = RunSettings(llm=LLMSettings(model="m", backend="openai", hosts=("http://old:1/v1",)))
+    (tmp_path / "r").mkdir()
+    (tmp_path / "r" / "settings.json").write_text(json.dumps(settings.to_json()))
+    plain = resumed_settings(build_parser().parse_args(["run", "--resume", str(tmp_path / "r")]))
+    named = resumed_settings(build_parser().parse_args(["run", "--resume", str(tmp_path / "r"),
+                                                        "--host", "http://new:2/v1"]))
+    assert plain.retry_overflow is False and plain.llm.hosts == ("http://old:1/v1",)
+    assert named.retry_overflow is True and named.llm.hosts == ("http://new:2/v1",)

@@ -10,7 +10,6 @@ installed Exudyn: every keyword must exist and must not be a deprecated one.
 
 from __future__ import annotations
 
-import inspect
 import os
 import re
 import subprocess
@@ -20,6 +19,7 @@ import warnings
 import exudyn as exu
 import exudyn.utilities as exu_utilities
 import pytest
+from exudyn_api import MAIN_SYSTEM, call_problems, calls, deprecated_arguments
 
 from meceng.agents.catalog import Catalog, rigid_catalog
 from meceng.tasks.base import PREAMBLE
@@ -130,79 +130,14 @@ def test_example_runs_without_files_or_deprecations(catalog, name, tmp_path):
     assert created == [], f"example created files: {created}"
 
 
-# --- static check of the calls shown in context texts and examples ----------------------------
-
-_CALL = re.compile(r"(?<![\w.])(mbs\.\w+|exu\.\w+|[A-Z]\w*)\(")
-_MAIN_SYSTEM = exu.SystemContainer().AddSystem()
-_ARGUMENT_DOC = re.compile(r"^\s*(\w+): (.*)$", re.MULTILINE)
-
-
-def _deprecated_arguments(function) -> set[str]:
-    """Arguments the docstring calls deprecated ('deprecated name of ...', 'deprecated since ...')
-    or not accepted, as Exudyn documents them for the Create functions and the item classes."""
-    doc = inspect.getdoc(function) or ""
-    return {
-        name
-        for name, text in _ARGUMENT_DOC.findall(doc)
-        if "deprecated" in text.lower() or text.startswith("not accepted")
-    }
-
-
-def _calls(text: str) -> list[tuple[str, list[str]]]:
-    """(callee, top-level keyword names) of every call ``name(...)`` in the text."""
-    calls = []
-    for match in _CALL.finditer(text):
-        depth, start, segments = 1, match.end(), []
-        i = start
-        while i < len(text) and depth:
-            ch = text[i]
-            if ch in "([{":
-                depth += 1
-            elif ch in ")]}":
-                depth -= 1
-            if (ch == "," and depth == 1) or depth == 0:
-                segments.append(text[start:i])
-                start = i + 1
-            i += 1
-        keywords = [m.group(1) for s in segments if (m := re.match(r"\s*(\w+)\s*=(?!=)", s))]
-        calls.append((match.group(1), keywords))
-    return calls
-
-
-def _callable(name: str):
-    if name.startswith("mbs."):
-        return getattr(_MAIN_SYSTEM, name[4:], None)
-    if name.startswith("exu."):
-        return getattr(exu, name[4:], None)
-    return getattr(exu_utilities, name, None)
-
-
-def _parameters(function) -> set[str] | None:
-    try:
-        return set(inspect.signature(function).parameters)
-    except (TypeError, ValueError):  # a C++ function without a Python signature
-        return None
+# --- static check of the calls shown in context texts and examples (tests/exudyn_api.py) ------
 
 
 @pytest.mark.parametrize("name", EXPECTED_NAMES)
 def test_calls_use_existing_current_names(catalog, name):
     component = catalog.get(name)
     for where, text in (("context", component.context), ("example", component.example)):
-        for callee, keywords in _calls(text):
-            function = _callable(callee)
-            if function is None:
-                # names defined by the program itself (e.g. a user function) are not Exudyn's
-                assert not callee.startswith(("mbs.", "exu.")), f"{where}: unknown {callee}"
-                assert not callee.startswith("Create"), f"{where}: unknown {callee}"
-                continue
-            doc = inspect.getdoc(function) or ""
-            assert not doc.startswith("DEPRECATED"), f"{where}: {callee} is deprecated"
-            deprecated = _deprecated_arguments(function)
-            parameters = _parameters(function)
-            for keyword in keywords:
-                assert keyword not in deprecated, f"{where}: {callee}({keyword}=...) is deprecated"
-                if parameters is not None and "kwargs" not in parameters:
-                    assert keyword in parameters, f"{where}: {callee} has no argument {keyword}"
+        assert call_problems(text) == [], where
 
 
 @pytest.mark.parametrize("name", EXPECTED_NAMES)
@@ -221,10 +156,13 @@ def test_settings_and_output_types_exist_and_are_current(catalog, name):
 
 
 def test_the_static_check_finds_deprecated_arguments():
-    calls = dict(_calls("mbs.CreateMassPoint(referencePosition=[0, 0, 0], physicsMass=f(1, 2), gravity=g)"))
-    assert calls["mbs.CreateMassPoint"] == ["referencePosition", "physicsMass", "gravity"]
-    assert "physicsMass" in _deprecated_arguments(_MAIN_SYSTEM.CreateMassPoint)
-    assert "bodyNumbers" in _deprecated_arguments(_MAIN_SYSTEM.CreateSpringDamper)
-    assert "bodyNumbers" not in _deprecated_arguments(_MAIN_SYSTEM.CreateRollingDisc)
-    assert "factorValue1" in _deprecated_arguments(exu_utilities.CoordinateConstraint)
-    assert "sphereRadius" not in _deprecated_arguments(_MAIN_SYSTEM.CreateSphereTriangleContact)
+    found = dict(calls("mbs.CreateMassPoint(referencePosition=[0, 0, 0], physicsMass=f(1, 2), gravity=g)"))
+    assert found["mbs.CreateMassPoint"] == ["referencePosition", "physicsMass", "gravity"]
+    assert "physicsMass" in deprecated_arguments(MAIN_SYSTEM.CreateMassPoint)
+    assert "bodyNumbers" in deprecated_arguments(MAIN_SYSTEM.CreateSpringDamper)
+    assert "bodyNumbers" not in deprecated_arguments(MAIN_SYSTEM.CreateRollingDisc)
+    assert "factorValue1" in deprecated_arguments(exu_utilities.CoordinateConstraint)
+    assert "sphereRadius" not in deprecated_arguments(MAIN_SYSTEM.CreateSphereTriangleContact)
+    assert call_problems("mbs.CreateMassPoint(physicsMass=1)") == ["mbs.CreateMassPoint(physicsMass=...) is deprecated"]
+    assert call_problems("mbs.CreateGround(refPosition=[0, 0, 0])") == ["mbs.CreateGround has no argument refPosition"]
+    assert call_problems("femArm.LoadFromFile('arm.npz'); mbs.CreateNothing()") == ["unknown mbs.CreateNothing"]

@@ -98,6 +98,34 @@ def test_resume_on_another_server(tmp_path) -> None:
     assert moved.llm.temperature == 0.3 and moved.llm.model == "m:1b" and moved.resume
 
 
+def test_vision_is_a_run_setting_that_resume_keeps(tmp_path) -> None:
+    """--vision goes into the LLM settings, settings.json and back through --resume; a run folder
+    from before the setting existed resumes without it."""
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
+
+    parser = build_parser()
+    assert llm_settings(parser.parse_args(["run", "--model", "m:1b"])).vision is False
+    args = parser.parse_args(["run", "--model", "m:1b", "--vision", "--agent", "loop", "--out", str(tmp_path)])
+    written = run_settings(args, llm_settings(args)).to_json()
+    assert written["llm"]["vision"] is True
+    for name, saved in (("seeing", written), ("older", {**written, "llm": {
+            k: v for k, v in written["llm"].items() if k != "vision"}})):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "settings.json").write_text(json.dumps(saved))
+    assert resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "seeing")])).llm.vision is True
+    assert resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "older")])).llm.vision is False
+
+
+def test_gold_run_with_vision_records_it_and_ignores_it(tmp_path) -> None:
+    proc = meceng("run", "--model", "gold", "--vision", "--only", "3", "--variations", "1", "--out", str(tmp_path),
+                  "--name", "g", "--no-progress")
+    assert proc.returncode == 0, proc.stderr
+    run = json.loads((tmp_path / "g" / "run.json").read_text())
+    assert run["settings"]["llm"]["vision"] is True and run["summary"]["rates"]["overall"] == 1.0
+    assert json.loads((tmp_path / "g" / "settings.json").read_text())["llm"]["vision"] is True
+
+
 def test_a_temperature_the_api_will_not_get_is_refused(tmp_path) -> None:
     """--temperature with --api-defaults or Anthropic would be dropped silently: a clear error instead."""
     env = {**os.environ, "ANTHROPIC_API_KEY": "k", "OPENAI_API_KEY": "k"}
@@ -108,3 +136,61 @@ def test_a_temperature_the_api_will_not_get_is_refused(tmp_path) -> None:
                               timeout=120, env=env)
         assert proc.returncode == 2 and said in proc.stderr and "--temperature 0.7" in proc.stderr
     assert not (tmp_path / "runs").exists()
+
+
+def test_an_unknown_task_in_only_is_refused_and_nothing_runs(tmp_path) -> None:
+    proc = meceng("run", "--model", "gold", "--only", "single_pendulum,single_pendulm", "--out", str(tmp_path))
+    assert proc.returncode == 2, proc.stdout + proc.stderr
+    assert "'single_pendulm'" in proc.stderr and "did you mean single_pendulum" in proc.stderr
+    assert list(tmp_path.iterdir()) == []  # no run folder: nothing started
+    proc = meceng("run", "--model", "gold", "--only", "999", "--out", str(tmp_path))
+    assert proc.returncode == 2 and "'999'" in proc.stderr
+    proc = meceng("evaluate", "newtons_cradel", "--code", str(tmp_path / "x.py"))
+    assert proc.returncode == 2 and "did you mean newtons_cradle" in proc.stderr
+    proc = meceng("tasks", "prompt", "newtons_cradel")
+    assert proc.returncode == 2 and "did you mean newtons_cradle" in proc.stderr
+
+
+def test_registry_refuses_unknown_keys_with_close_matches() -> None:
+    import pytest
+
+    from meceng.tasks.registry import UnknownTaskError
+
+    registry = default_registry()
+    with pytest.raises(UnknownTaskError) as caught:
+        registry.select(["1", "2"], ["single_pendulum", "no_such_task", "doubel_pendulum"])
+    assert caught.value.unknown == ["no_such_task", "doubel_pendulum"]
+    assert caught.value.suggestions["doubel_pendulum"][0] == "double_pendulum"
+    assert [m.slug for m in registry.select(None, ["single_pendulum", "43"])] == ["single_pendulum", "newtons_cradle"]
+    assert isinstance(caught.value, ValueError) and isinstance(caught.value, KeyError)
+
+
+def test_tasks_prompt_prints_what_the_pipeline_sends() -> None:
+    from meceng.agents.catalog import rigid_catalog
+    from meceng.agents.prompts import code_prompt, select_prompt
+
+    instance = default_registry().get("newtons_cradle").instance(2)
+    prompts = json.loads(meceng("tasks", "prompt", "newtons_cradle", "--seed", "2", "--select-template", "CI3",
+                                "--code-template", "MBS2", "--json").stdout)
+    catalog = rigid_catalog()
+    assert [(p["stage"], p["template"]) for p in prompts] == [("select", "CI3"), ("code", "MBS2")]
+    assert prompts[0]["text"] == select_prompt("CI3", instance.description, catalog.menu())
+    assert prompts[1]["text"] == code_prompt("MBS2", instance.description,
+                                             catalog.context(instance.required_components))
+    loop = json.loads(meceng("tasks", "prompt", "newtons_cradle", "--seed", "2", "--agent", "loop", "--json").stdout)
+    assert loop[1]["text"].startswith(code_prompt("MBS1", instance.description,
+                                                  catalog.context(instance.required_components)))
+    assert "simulate(code)" in loop[1]["text"]
+    text = meceng("tasks", "prompt", "newtons_cradle", "--seed", "2", "--select-template", "CI3",
+                  "--code-template", "MBS2").stdout
+    assert prompts[0]["text"].rstrip("\n") in text and prompts[1]["text"].rstrip("\n") in text
+
+
+def test_tasks_prompt_of_an_assembly_gives_its_parts_first_with_the_part_template() -> None:
+    prompts = json.loads(meceng("tasks", "prompt", "rotor_in_two_bearing_blocks_with_pedestal", "--seed", "1",
+                                "--json").stdout)
+    kinds = [(p["kind"], p["stage"], p["template"]) for p in prompts]
+    # two distinct parts (the block used twice is prompted once), then the assembly
+    assert kinds == [("part", "select", "PART1"), ("part", "code", "PART1")] * 2 + [
+        ("assembly", "select", "CI1"), ("assembly", "code", "MBS1")]
+    assert "### InterfaceJoint" in prompts[-1]["text"] and "Part Loading Info" in prompts[-1]["text"]

@@ -95,10 +95,61 @@ async def test_openai_compatible_backend(tmp_path) -> None:
                                progress=False)
         run_json = await run_benchmark(settings, backend=OpenAIBackend(llm))
     body = server.requests[-1]
-    assert body["model"] == "served-model" and body["max_completion_tokens"] == 1234
+    assert body["model"] == "served-model" and body["max_completion_tokens"] == body["max_tokens"] == 1234
     assert body["seed"] == 7 and body["reasoning_effort"] == "low" and body["stream"] is False
     run = json.loads(run_json.read_text())
     task = run["tasks"][0]
     assert task["overall"] is True
     assert task["selection"]["meta"]["attempts"] == 2  # the 429 was retried
     assert task["selection"]["meta"]["prompt_tokens"] == 100
+
+
+async def test_a_silent_server_ends_the_run_without_waiting_out_every_request(tmp_path) -> None:
+    """A server that accepts connections and never answers (llama.cpp's after a failed decode):
+    once a few requests in a row got no answer, the rest are refused unsent, so the run ends with
+    every task lost after a couple of timeouts instead of one timeout per request and attempt."""
+    import json
+
+    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.pipeline import RunSettings, run_benchmark
+
+    release = asyncio.Event()
+
+    async def silent(body):
+        await release.wait()  # answers only when the test is over, to a client long gone
+        return 200, chat_reply("too late"), {}
+
+    slugs = ("single_mass_oscillator", "single_pendulum", "free_fall_mass_point", "flying_mass_point")
+    async with FakeOllama(silent) as server:
+        llm = LLMSettings(model="m", backend="openai", hosts=(server.url + "/v1",), batch_size=2, timeout_s=0.3,
+                          max_attempts=3, backoff_s=0.01)
+        settings = RunSettings(llm=llm, only=slugs, variations=2, out=tmp_path, run_name="silent", progress=False,
+                               workers=1)
+        try:
+            run = json.loads((await run_benchmark(settings, backend=OpenAIBackend(llm))).read_text())
+        finally:
+            release.set()
+    tasks = run["tasks"]
+    assert len(tasks) == 8 and all(t["first_failure"] == "infrastructure" for t in tasks)
+    assert any("not sent" in t["infrastructure_error"] for t in tasks)
+    # 8 selections x 3 attempts would be 24 requests sent; the silence stops it after the first few
+    assert len(server.requests) <= 2 * llm.batch_size + 1
+
+
+async def test_a_busy_server_is_retried_not_refused() -> None:
+    """503s are answers: a server that says it is busy stays in use and its requests succeed."""
+    calls = {"n": 0}
+
+    def busy_then_fine(body):
+        calls["n"] += 1
+        if calls["n"] <= 6:
+            return 503, {"error": "queue full"}, {}
+        return 200, chat_reply("ok"), {}
+
+    async with FakeOllama(busy_then_fine) as server:
+        backend = OllamaBackend(LLMSettings(model="m", backend="ollama", hosts=(server.url,), batch_size=1,
+                                            backoff_s=0.001, max_attempts=8))
+        responses = await asyncio.gather(*(backend.chat(ChatRequest(user_messages(f"r{k}"), "select", f"t@{k}"))
+                                           for k in range(2)))
+        await backend.aclose()
+    assert [r.content for r in responses] == ["ok", "ok"] and len(server.requests) == 8

@@ -102,6 +102,24 @@ def test_default_sampling_sends_no_temperature_or_seed() -> None:
     assert "temperature" not in options and "seed" not in options and options["num_ctx"] == 4096
 
 
+def test_vision_in_a_model_entry_reaches_the_runs_settings(tmp_path: Path) -> None:
+    spec = tmp_path / "vision.toml"
+    spec.write_text('[[models]]\nname = "claude-x"\nbackend = "anthropic"\nvision = true\n'
+                    '[[models]]\nname = "qwen3:8b"\n')
+    (study,) = load_spec(spec).studies
+    seeing, blind = study_points(study)
+    assert seeing.model.vision and seeing.llm().vision is True and seeing.name.endswith("_vision")
+    assert not blind.model.vision and blind.llm().vision is False
+    assert blind.name == "qwen3-8b_T0_think-False_CI1_MBS1_L1-2_v20_s0"  # as before the setting existed
+
+
+def test_sweep_vision_flag_with_model(tmp_path: Path) -> None:
+    proc = sweep("--model", "qwen3-vl:8b", "--vision", "--only", "3", "--variations", "1", "--dry-run",
+                 "--out", str(tmp_path))
+    assert proc.returncode == 0, proc.stderr
+    assert "qwen3-vl-8b_T0_think-False_CI1_MBS1_L1-2_v1_s0_only-3_vision" in proc.stdout
+
+
 def test_dry_run_prints_the_plan_and_starts_nothing(tmp_path: Path) -> None:
     proc = sweep("--spec", str(PAPER), "--dry-run", "--out", str(tmp_path / "runs"))
     assert proc.returncode == 0, proc.stderr
@@ -128,6 +146,15 @@ def test_two_studies_sharing_a_point_run_it_once(tmp_path: Path) -> None:
     assert proc.returncode == 0, proc.stderr
     runs = sorted(p.parent.name for p in (tmp_path / "runs").glob("*/run.json"))
     assert runs == ["gold_T0_think-False_CI1_MBS1_L1-2_v1_s0_only-3", "gold_T0_think-False_CI2_MBS1_L1-2_v1_s0_only-3"]
+
+
+def test_an_unknown_task_in_only_is_refused(tmp_path: Path) -> None:
+    proc = sweep("--model", "gold", "--only", "single_pendulum,no_such_task", "--dry-run", "--out", str(tmp_path))
+    assert proc.returncode == 2 and "'no_such_task'" in proc.stderr
+    spec = tmp_path / "typo.toml"
+    spec.write_text('only = ["newtons_cradel"]\n[[models]]\nname = "gold"\nbackend = "gold"\n')
+    with pytest.raises(ValueError, match="did you mean newtons_cradle"):
+        load_spec(spec)
 
 
 def test_shards_of_the_paper_partition_its_runs_balanced_by_requests() -> None:

@@ -189,3 +189,40 @@ def test_report_links_to_a_viewer_beside_it(tmp_path: Path) -> None:
     build_report([run], tmp_path / "report")
     assert "<a href='viewer/index.html#task=single_pendulum'>single_pendulum</a>" in (
         tmp_path / "report" / "report.html").read_text()
+
+
+async def test_task_pages_draw_the_programs_system_beside_the_ground_truths(tmp_path: Path) -> None:
+    """A link placed at its tip instead of its centre: the program's box and the ground truth's
+    stand apart in the same view, on every page of a rigid record (passing ones too)."""
+    import re
+
+    from meceng.agents.inspect.scene import VIEWS
+    from meceng.pipeline import RunSettings, run_benchmark
+    from meceng.pipeline.rescore import evaluate_program
+    from meceng.tasks.registry import default_registry
+
+    slug = "rrr_articulated_robot_with_3d_cubic_trajectory"
+    settings = RunSettings(only=(slug,), levels=("2",), variations=1, out=tmp_path, run_name="gold",
+                           progress=False)
+    await run_benchmark(settings)
+    stats = build_site([tmp_path / "gold"], tmp_path / "site")
+    page = next((tmp_path / "site" / "tasks").rglob("*.html")).read_text()
+    assert stats.pages == 1 and "System: program vs ground truth" in page
+    assert page.count("<svg class='system'") == 4 * len(VIEWS)  # program and truth, t = 0 and the end
+    assert page.count("<polygon") == 4 * len(VIEWS) * 3  # three links as boxes in every picture
+
+    instance = default_registry().get(slug).instance(0)
+    wrong = instance.reference_program.replace("referencePosition=[length2 + 0.5 * length3, 0, length1]",
+                                               "referencePosition=[length2 + length3, 0, length1]")
+    _, candidate, _ = await evaluate_program(instance, wrong)
+    with np.load(traces_path(tmp_path / "gold", f"{slug}@0")) as data:
+        arrays = json.loads(str(data["scenes"]))
+    assert arrays["cand"]["shapes"][0] == arrays["ref"]["shapes"][0]  # the gold run's program is the truth
+    from meceng.pipeline.traces import system_scenes
+
+    moved = system_scenes(candidate)
+    boxes = [s for s in moved["shapes"][0] if s[0] == "box"]
+    truth = [s for s in arrays["ref"]["shapes"][0] if s[0] == "box"]
+    centre = lambda shape: np.mean(np.asarray(shape[2]), axis=0)  # noqa: E731
+    assert np.allclose(centre(boxes[2]) - centre(truth[2]), [instance.params["length3"] / 2, 0, 0], atol=1e-6)
+    assert re.search(r"ground truth, t = 0 s", page)

@@ -20,7 +20,15 @@ from typing import Any
 
 import anthropic
 
-from meceng.agents.llm import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall, parse_retry_after
+from meceng.agents.llm import (
+    IMAGE_MEDIA_TYPE,
+    ChatRequest,
+    ChatResponse,
+    LLMError,
+    LLMSettings,
+    ToolCall,
+    parse_retry_after,
+)
 from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
 
 MIN_THINKING_BUDGET = 1024
@@ -68,7 +76,7 @@ class AnthropicBackend(EndpointBackend):
             raise LLMError(f"anthropic error {status}: {_error_text(exc)}", transient=transient, status=status,
                            retry_after=parse_retry_after(exc.response.headers.get("retry-after"))) from exc
         except anthropic.APIConnectionError as exc:  # also the timeouts
-            self._note_failure(endpoint, True)
+            self._note_silence(endpoint)
             raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
                            transient=True) from exc
         except anthropic.APIResponseValidationError as exc:
@@ -116,7 +124,8 @@ def _error_text(exc: anthropic.APIStatusError) -> str:
 def _wire_messages(messages: tuple[dict[str, Any], ...]) -> tuple[str, list[dict[str, Any]]]:
     """The agent's conversation in Anthropic's form: the system text apart; an assistant turn as
     content blocks (signed thinking first, text, ``tool_use``); tool results as ``tool_result``
-    blocks of one user turn (the API wants consecutive results together)."""
+    blocks of one user turn (the API wants consecutive results together), a result's pictures
+    inside its block."""
     system: list[str] = []
     wire: list[dict[str, Any]] = []
     for message in messages:
@@ -124,7 +133,7 @@ def _wire_messages(messages: tuple[dict[str, Any], ...]) -> tuple[str, list[dict
         if role == "system":
             system.append(str(message["content"]))
         elif role == "tool":
-            block = {"type": "tool_result", "tool_use_id": message["tool_call_id"], "content": message["content"]}
+            block = {"type": "tool_result", "tool_use_id": message["tool_call_id"], "content": _result_content(message)}
             if wire and wire[-1]["role"] == "user" and isinstance(wire[-1]["content"], list):
                 wire[-1]["content"].append(block)
             else:
@@ -142,3 +151,15 @@ def _wire_messages(messages: tuple[dict[str, Any], ...]) -> tuple[str, list[dict
         else:
             wire.append({"role": "user", "content": message["content"]})
     return "\n\n".join(system), wire
+
+
+def _result_content(message: dict[str, Any]) -> str | list[dict[str, Any]]:
+    """A tool result's content: its text, or with pictures a list of blocks — the text (the API
+    refuses an empty text block, so none then) and one base64 ``image`` block per picture, which a
+    ``tool_result`` may hold as a user turn does."""
+    if not message.get("images"):
+        return message["content"]
+    blocks: list[dict[str, Any]] = [{"type": "text", "text": message["content"]}] if message["content"] else []
+    blocks.extend({"type": "image", "source": {"type": "base64", "media_type": IMAGE_MEDIA_TYPE, "data": image}}
+                  for image in message["images"])
+    return blocks

@@ -13,7 +13,15 @@ from typing import Any
 
 import aiohttp
 
-from meceng.agents.llm import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall, parse_retry_after
+from meceng.agents.llm import (
+    ChatRequest,
+    ChatResponse,
+    LLMError,
+    LLMSettings,
+    ToolCall,
+    parse_retry_after,
+    pictures_after_tool_results,
+)
 from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
 
 
@@ -52,7 +60,7 @@ class OllamaBackend(EndpointBackend):
                 payload = await response.read()
                 status, retry_after = response.status, parse_retry_after(response.headers.get("Retry-After"))
         except (aiohttp.ClientError, OSError, TimeoutError) as exc:
-            self._note_failure(endpoint, True)
+            self._note_silence(endpoint)
             raise LLMError(f"connection to {endpoint.host} failed: {type(exc).__name__}: {exc}",
                            transient=True) from exc
         if status >= 400:
@@ -77,9 +85,10 @@ class OllamaBackend(EndpointBackend):
 
 def _wire_messages(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
     """The agent's conversation in Ollama's form: calls as ``function`` objects with argument
-    dicts, results named by ``tool_name``."""
+    dicts, results named by ``tool_name``; the results' pictures as the ``images`` (base64) of a
+    user message after them, where every vision model's template shows them."""
     wire = []
-    for message in messages:
+    for message in pictures_after_tool_results(messages):
         if message["role"] == "tool":
             wire.append({"role": "tool", "tool_name": message["name"], "content": message["content"]})
         elif message["role"] == "assistant":

@@ -106,3 +106,8 @@ def assembly_catalog() -> Catalog:
     from meceng.agents.components_rigid import COMPONENTS as RIGID
 
     return Catalog(RIGID + FLEXIBLE)
+
+
+def catalog_for(kind: str) -> Catalog:
+    """The catalog a task of this kind chooses from: "rigid" (levels 1-2), "part" or "assembly"."""
+    return {"part": part_catalog, "assembly": assembly_catalog}.get(kind, rigid_catalog)()

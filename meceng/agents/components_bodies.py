@@ -14,7 +14,8 @@ GROUND = Component(
     context=text_block("""
         oGround = mbs.CreateGround(referencePosition=[0, 0, 0])
         - Returns an ObjectIndex that is used like a body in itemNumbers=[oGround, oBody] of springs, joints
-          and constraints (conventionally the ground comes first).
+          and constraints: list the two items in the order the description names them, the ground first where
+          it gives no order.
         - Create ONE ground object at [0, 0, 0] and reuse it for all attachments. A fixed point on ground is
           given by localPosition0=[x, y, z] of springs and distance constraints (local to the ground, i.e.
           global coordinates when the ground is at [0, 0, 0]) or by the global position= of joints.
@@ -74,8 +75,11 @@ RIGID_BODY = Component(
                                     gravity=[0, -9.81, 0])
         - inertia: a RigidBodyInertia object that gives mass AND inertia tensor: InertiaCuboid, InertiaCylinder,
           InertiaSphere, InertiaRodX(mass, length), InertiaMassPoint(mass); there is no mass= argument.
-          With these helpers the center of mass is the body's reference point, so referencePosition is the
-          global position of the center of mass.
+          One helper alone puts the center of mass at the body's reference point, so referencePosition is the
+          global position of the center of mass. Inertias add up: InertiaCylinder(...) +
+          InertiaMassPoint(mass=mu).Translated([0, 0, r]) is a cylinder with a point mass at the local point
+          [0, 0, r]; the reference point stays at the cylinder's center and the center of mass moves towards
+          the point mass (an unbalance); referencePosition is then the reference point's global position.
         - referenceRotationMatrix: rotation from local body axes to global axes in the reference configuration,
           e.g. RotationMatrixZ(phi) with phi in rad (also RotationMatrixX/Y), or np.eye(3) for no rotation.
         - initialVelocity [m/s] and initialAngularVelocity [rad/s] are global vectors.
@@ -104,7 +108,7 @@ INERTIA_CUBOID = Component(
     context=text_block("""
         inertia = InertiaCuboid(density=rho, sideLengths=[a, b, c])
         - density [kg/m^3]; sideLengths [m] along the body's LOCAL x-, y- and z-axes; mass = rho*a*b*c.
-        - The center of mass is the body's reference point (referencePosition of CreateRigidBody).
+        - Alone it puts the center of mass at the body's reference point (referencePosition of CreateRigidBody).
         - If a mass m is given instead of a density, use density=m/(a*b*c).
         - Orient the local axes with referenceRotationMatrix, e.g. a link with its long side a along local x
           that is rotated by phi in the x-y plane: referenceRotationMatrix=RotationMatrixZ(phi).
@@ -135,7 +139,8 @@ INERTIA_CYLINDER = Component(
         - axis: the cylinder axis as an integer index of the LOCAL body axes: 0 = x, 1 = y, 2 = z (not a vector).
         - density [kg/m^3], length and radii [m]; innerRadius > 0 gives a hollow cylinder (tube, ring).
         - mass = rho*pi*(r^2 - ri^2)*L; solid: J_axis = m*r^2/2. If a mass m is given, density=m/(pi*r^2*L).
-        - The center of mass is the body's reference point; a thin disc or wheel is a short cylinder.
+        - Alone it puts the center of mass at the body's reference point (an added, translated point mass
+          moves it, see RigidBody); a thin disc or wheel is a short cylinder.
     """),
     example=rigid_example("""
         # a solid steel rotor with its axis along global x, spinning freely (no gravity)
@@ -157,7 +162,7 @@ INERTIA_SPHERE = Component(
     context=text_block("""
         inertia = InertiaSphere(mass=m, radius=r)          # or InertiaSphere(density=rho, radius=r)
         - Give either mass [kg] or density [kg/m^3], not both; radius [m]; J = 2/5*m*r^2 about every axis.
-        - The center of mass (sphere center) is the body's reference point.
+        - Alone it puts the center of mass (sphere center) at the body's reference point.
         - A sphere that only translates (no friction, no rolling) can also be a MassPoint.
     """),
     example=rigid_example("""

@@ -82,8 +82,8 @@ FLEXIBLE_BODY = Component(
 INTERFACE_JOINT = Component(
     name="InterfaceJoint",
     description=(
-        "joint at a flexible part's interface: clamp it to ground, or a revolute / prismatic joint to the "
-        "ground or to another part's interface"
+        "joint at a flexible part's interface, made with Exudyn's GenericJoint object between two markers: clamp "
+        "it to ground, or a revolute / prismatic / partly locked joint to the ground or to another part's interface"
     ),
     context=text_block("""
         oGround = mbs.CreateGround()
@@ -94,6 +94,8 @@ INTERFACE_JOINT = Component(
           prismatic along x [0,1,1,1,1,1].
         - Between two parts: markerNumbers=[partA['a:bore'], partB['b:pin']]; both interfaces must be at the
           same point initially (place the parts accordingly).
+        - markerNumbers in the order the description names the two sides (the ground marker first when the
+          description names the ground first).
         - The ground marker goes at the interface's centre (the joint point of the description).
     """),
     example=_example("""
@@ -108,7 +110,8 @@ INTERFACE_JOINT = Component(
 
 INTERFACE_LOAD = Component(
     name="InterfaceLoad",
-    description="force or torque acting on a flexible part at one of its interfaces",
+    description=("force or torque acting on a flexible part at one of its interfaces (Exudyn's Force / Torque load "
+                 "on the interface marker)"),
     context=text_block("""
         mbs.AddLoad(Force(markerNumber=arm['arm:right'], loadVector=[0, 0, -F]))    # force in N, global frame
         mbs.AddLoad(Torque(markerNumber=rotor['rotor:hub'], loadVector=[T, 0, 0]))  # torque in Nm

@@ -16,7 +16,8 @@ REVOLUTE_JOINT = Component(
         - position: GLOBAL joint point, axis: GLOBAL rotation axis, both for the reference configuration
           (referencePosition/referenceRotationMatrix of the bodies); the joint point is usually not the
           center of mass (e.g. the upper end of a pendulum link).
-        - Only rigid bodies and ground; for a mass point on a massless rod use DistanceConstraint.
+        - Only rigid bodies and ground; for a mass point on a massless rod use DistanceConstraint; a joint at a
+          flexible part's interface is an InterfaceJoint.
         - In 3D a closed loop of revolute joints (four-bar, slider-crank) is over-constrained: close the loop
           with a SphericalJoint with constrainedAxes=[1, 1, 0] (planar x-y mechanism) instead.
     """),
@@ -46,7 +47,8 @@ PRISMATIC_JOINT = Component(
         - axis: GLOBAL sliding direction, position: GLOBAL joint point (usually the slider's reference
           position), both for the reference configuration; all rotations and the other two translations are
           locked.
-        - Only rigid bodies and ground (no mass points).
+        - Only rigid bodies and ground (no mass points); a joint at a flexible part's interface is an
+          InterfaceJoint.
     """),
     example=rigid_example("""
         # a block sliding without friction down a guide inclined by 30 degrees in the x-y plane
@@ -106,8 +108,11 @@ GENERIC_JOINT = Component(
           [0, 1, 1, 0, 0, 0] = only the y and z translations locked (a floating bearing along x).
         - position: GLOBAL joint point; rotationMatrixAxes: GLOBAL orientation of the joint frame (its columns
           are the joint x, y, z axes), both for the reference configuration; np.eye(3) = global axes.
-        - Only rigid bodies and ground. Avoid locking a direction twice (redundant constraints), e.g. when a
-          second bearing supports a shaft that is already held by a spherical joint.
+        - CreateGenericJoint takes rigid bodies and ground. A flexible part's interface markers are joined with
+          the GenericJoint object itself, mbs.AddObject(GenericJoint(markerNumbers=[m0, m1], ...)): see
+          InterfaceJoint.
+        - Avoid locking a direction twice (redundant constraints), e.g. when a second bearing supports a shaft
+          that is already held by a spherical joint.
     """),
     example=rigid_example("""
         # a flap (plate) hinged at its upper edge: the generic joint locks everything except the rotation

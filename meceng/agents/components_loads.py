@@ -19,6 +19,7 @@ FORCE = Component(
         - localPosition: point of application in body-local coordinates (rigid bodies; off the center of mass
           it also creates a moment); keep [0, 0, 0] for mass points.
         - Gravity is NOT a force load: give it with gravity= of CreateMassPoint/CreateRigidBody.
+        - On a flexible part the force acts at an interface marker: see InterfaceLoad.
         - A time-dependent force uses loadVectorUserFunction, see LoadUserFunction.
     """),
     example=rigid_example("""
@@ -40,7 +41,8 @@ TORQUE = Component(
         mbs.CreateTorque(itemNumber=oBody, loadVector=[Tx, Ty, Tz], bodyFixed=False)
         - loadVector: torque [N*m] in GLOBAL coordinates (bodyFixed=True: body-local, rotating with the body);
           e.g. a drive about the global z-axis: [0, 0, T].
-        - Rigid bodies only (a mass point has no rotation); itemNumber (singular) is the body.
+        - Rigid bodies (a mass point has no rotation); itemNumber (singular) is the body. On a flexible part the
+          torque acts at an interface marker: see InterfaceLoad.
         - A time-dependent torque uses loadVectorUserFunction, see LoadUserFunction.
     """),
     example=rigid_example("""

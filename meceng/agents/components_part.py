@@ -50,9 +50,10 @@ CYLINDER = Component(
         shape = Cylinder(Pnt(x, y, z), axisDirection, r=radius, h=length)
         - Pnt is the centre of the start face; axisDirection is X, Y, Z or Vec(dx, dy, dz); the cylinder
           extends by h along the direction.
-        - A bore or hole is a cylinder subtracted from a solid (BooleanCut); make it a little longer than the
-          wall only if the description says the hole goes through (then start it on the surface and use the
-          wall thickness as h, so no sliver faces remain).
+        - A bore or hole is a cylinder subtracted from a solid (BooleanCut). A hole the description calls
+          through must span the whole wall: start the cylinder on one surface with h = the wall thickness, or
+          start it outside the wall and make it longer; both cut the same hole. A hole that is not through
+          gets exactly its depth as h.
     """),
     example=_geometry("""
         # a shaft of radius 0.02 m and length 0.3 m along x, starting at the origin
@@ -122,7 +123,7 @@ BOOLEAN_CUT = Component(
     description="subtract one solid from another (bores, holes, keyways, slots, grooves, hollow profiles)",
     context=text_block("""
         shape = solidA - solidB
-        - A through hole: subtract a cylinder that spans the wall exactly (or slightly more).
+        - A through hole: subtract a cylinder that spans at least the whole wall (see Cylinder).
         - A keyway: extrude the keyway's base face and subtract the extruded solid from the shaft.
     """),
     example=_geometry("""

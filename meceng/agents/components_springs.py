@@ -204,7 +204,9 @@ COORDINATE_CONSTRAINT = Component(
         - The function creates a ground node, two MarkerNodeCoordinate markers and a CoordinateConstraint; it
           is equivalent to nGround = mbs.AddNode(NodePointGround()) + markers
           MarkerNodeCoordinate(nodeNumber=..., coordinate=...) + mbs.AddObject(CoordinateConstraint(
-          markerNumbers=[mGround, mMass])); prefer the one-line function.
+          markerNumbers=[mGround, mMass])); prefer the one-line function. Every constraint has its own ground
+          node: written by hand, do not share one NodePointGround between constraints (the items of the
+          model would differ from those of the one-line function).
     """),
     example=rigid_example("""
         # a mass point thrown along x while gravity acts in -y: its y-coordinate is locked

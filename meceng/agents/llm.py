@@ -61,6 +61,9 @@ class LLMSettings:
     # the environment variable holding the API key (None: the backend's conventional one); the name
     # is a setting, the key never is
     api_key_env: str | None = None
+    # the model takes images: the agent's ``snapshot`` tool answers with a picture (Anthropic image
+    # blocks, OpenAI ``image_url`` parts, Ollama ``images``); otherwise with a text description
+    vision: bool = False
 
     def __post_init__(self) -> None:
         # Anthropic's API (version 2026-10-21) takes no sampling parameters: whoever makes the
@@ -84,7 +87,7 @@ class LLMSettings:
             "temperature": self.temperature, "seed": self.seed, "think": self.think,
             "num_ctx": self.num_ctx, "num_predict": self.num_predict, "keep_alive": self.keep_alive,
             "batch_size": self.batch_size, "timeout_s": self.timeout_s, "max_attempts": self.max_attempts,
-            "api_defaults": self.api_defaults, "api_key_env": self.api_key_env,
+            "api_defaults": self.api_defaults, "api_key_env": self.api_key_env, "vision": self.vision,
         }
 
 
@@ -169,6 +172,27 @@ class LLMError(Exception):
         self.retry_after = retry_after
 
 
+class ContextExceeded(LLMError):
+    """The server refused a prompt that its context cannot hold together with the answer limit.
+
+    Neither the model's failure (it never saw the prompt) nor a passing one (the same server will
+    refuse the same prompt every time): the task is not graded, the run says so once with the
+    numbers, and ``--resume`` asks again only on a server the user names (``--host``).
+    """
+
+    def __init__(self, message: str, *, prompt_tokens: int | None, context: int | None, answer_limit: int,
+                 host: str, status: int | None = 400) -> None:
+        super().__init__(message, transient=False, status=status)
+        self.prompt_tokens = prompt_tokens
+        self.context = context
+        self.answer_limit = answer_limit
+        self.host = host
+
+    def to_json(self) -> dict[str, Any]:
+        return {"prompt_tokens": self.prompt_tokens, "context": self.context, "answer_limit": self.answer_limit,
+                "host": self.host}
+
+
 class Backend(Protocol):
     name: str
 
@@ -239,9 +263,52 @@ def assistant_message(response: ChatResponse) -> dict[str, Any]:
     return message
 
 
-def tool_message(call: ToolCall, result: str) -> dict[str, Any]:
-    """A tool's answer to one call."""
-    return {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
+def tool_message(call: ToolCall, result: str, images: tuple[str, ...] = ()) -> dict[str, Any]:
+    """A tool's answer to one call; ``images`` are base64-encoded PNGs (a ``snapshot``), which each
+    backend sends the way its API carries pictures."""
+    message: dict[str, Any] = {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
+    if images:
+        message["images"] = list(images)
+    return message
+
+
+IMAGE_MEDIA_TYPE = "image/png"  # what a tool's ``images`` are (base64 of the file's bytes)
+
+
+def pictures_after_tool_results(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
+    """The conversation for an API whose tool messages carry text only: the pictures of each run of
+    tool answers move to one user message right after that run, with a line saying which calls they
+    belong to.
+
+    OpenAI's Chat Completions takes images in user messages only, and every tool answer must
+    directly follow the assistant turn that called it, so the pictures cannot sit between the
+    answers; Ollama's API takes ``images`` on any message, but some of its vision models' templates
+    (Qwen3-VL's renderer) write a tool message's text without its images. A conversation without
+    pictures comes back as it was, message for message."""
+    out: list[dict[str, Any]] = []
+    pictured: list[dict[str, Any]] = []
+    for message in messages:
+        if message["role"] != "tool" and pictured:
+            out.append(_pictures_message(pictured))
+            pictured = []
+        if message["role"] == "tool" and message.get("images"):
+            pictured.append(message)
+            message = {k: v for k, v in message.items() if k != "images"}
+        out.append(message)
+    if pictured:
+        out.append(_pictures_message(pictured))
+    return out
+
+
+def _pictures_message(answers: list[dict[str, Any]]) -> dict[str, Any]:
+    """One user message with the pictures of these tool answers, in order, and a caption naming them."""
+    named = []
+    for answer in answers:
+        count = len(answer["images"])
+        call = f" {answer['tool_call_id']}" if answer.get("tool_call_id") else ""
+        named.append(f"{answer['name']}{call} ({count} picture{'s' if count > 1 else ''})")
+    return {"role": "user", "content": "Pictures returned by the tool calls above, in order: " + "; ".join(named),
+            "images": [image for answer in answers for image in answer["images"]]}
 
 
 def user_messages(*texts: str) -> tuple[dict[str, str], ...]:

@@ -14,26 +14,30 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, LLMError, assistant_message, tool_message
+from meceng.agents.llm import Backend, ChatRequest, ContextExceeded, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
-from meceng.agents.prompts import DEFAULT_CODE, code_prompt, gold_code
-from meceng.agents.steps import Selection
+from meceng.agents.prompts import DEFAULT_CODE, gold_code
+from meceng.agents.steps import Selection, generation_prompt
 from meceng.agents.toolbox import Toolbox
 from meceng.tasks.base import TaskInstance
 
 AGENT_NOTE = """
 You can call tools before you answer: `simulate(code)` runs a complete program and reports what it
-built and how it moved, `self_check(code)` looks for problems, `list_components()` and
-`component_docs(names)` give documentation. Test your program, repair it if needed, and then give
-the final program in a single ```python code block without calling a tool.
+built (every body, connector and load in global coordinates) and how it moved; `snapshot(code)`
+draws the system at t = 0 and at the end (the tool draws it: your program itself still has no
+visualization); `self_check(code)` looks for problems; `list_components()` and
+`component_docs(names)` give documentation. Test your program, compare what it built with the
+description, repair it if needed, and then give the final program in a single ```python code block
+without calling a tool.
 """
 
 PART_AGENT_NOTE = """
 You can call tools before you answer: `mesh_part(code)` builds, meshes and reduces a complete part
-program and reports its volume, mass, bounding box, interfaces (area and centre) and first
-eigenfrequencies; `list_components()` and `component_docs(names)` give documentation. Check the
-part against the description, repair it if needed, and then give the final program in a single
-```python code block without calling a tool.
+program and reports its volume, mass, bounding box, interfaces (area, centre, outward normal, faces)
+and the eigenfrequencies of its fixed-interface modes; `snapshot(code)` draws the part;
+`list_components()` and `component_docs(names)` give documentation. Check the part against the
+description, repair it if needed, and then give the final program in a single ```python code block
+without calling a tool.
 """
 
 
@@ -50,6 +54,7 @@ class AgentResult:
     transcript: list[dict[str, Any]] = field(default_factory=list)
     infrastructure_error: str | None = None
     reasoning_tokens: int = 0  # of completion_tokens, where the API reports them
+    context_exceeded: dict[str, Any] | None = None  # the first prompt did not fit the server's context
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -59,6 +64,14 @@ class AgentResult:
             "reasoning_tokens": self.reasoning_tokens, "transcript": self.transcript,
             "infrastructure_error": self.infrastructure_error,
         }
+
+
+def agent_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str], template: str,
+                 question: str | None = None) -> str:
+    """The agent's first message: the code prompt (or ``question``, a repair task's) with the note
+    on its tools appended."""
+    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
+    return (question or generation_prompt(instance, catalog, names, template)) + note
 
 
 async def run_agent(
@@ -71,9 +84,10 @@ async def run_agent(
     template: str = DEFAULT_CODE,
     max_rounds: int = 6,
     token_budget: int = 30000,
+    prompt: str | None = None,
 ) -> AgentResult:
-    note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names)) + note
+    """``prompt`` replaces the template's question (a repair task's); the tools' note follows it."""
+    prompt = agent_prompt(instance, catalog, selection.names, template, question=prompt)
     messages: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     transcript: list[dict[str, Any]] = [{"role": "user", "content": prompt}]
     first_code: str | None = None
@@ -87,6 +101,12 @@ async def run_agent(
                               tools=toolbox.schemas)
         try:
             response = await backend.chat(request)
+        except ContextExceeded as exc:
+            if rounds == 1:  # the task itself does not fit: nothing the model did
+                return AgentResult(None, None, str(exc), "infrastructure", rounds, dict(toolbox.calls), 0, 0,
+                                   transcript, infrastructure_error=str(exc), context_exceeded=exc.to_json())
+            stop = "context_full"  # the conversation the model led outgrew the context, like the token budget
+            break
         except LLMError as exc:
             return AgentResult(first_code, last_code, str(exc), "infrastructure", rounds, dict(toolbox.calls),
                                completion, prompt_tokens, transcript, infrastructure_error=str(exc),
@@ -113,8 +133,11 @@ async def run_agent(
                 first_code = first_code or code
                 last_code = code
             result = await toolbox.call(call.name, call.arguments if isinstance(call.arguments, dict) else {})
-            messages.append(tool_message(call, result))
-            transcript.append({"role": "tool", "name": call.name, "content": result})
+            messages.append(tool_message(call, result.text, result.images))
+            entry = {"role": "tool", "name": call.name, "content": result.text}
+            if result.images:  # the record keeps the picture's size, not the picture
+                entry["images"] = [f"PNG, {len(image) * 3 // 4} bytes" for image in result.images]
+            transcript.append(entry)
         if completion >= token_budget:
             stop = "token_budget"
             break

@@ -9,7 +9,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from meceng.tools.syntax import parse
+from meceng.syntax import parse
 
 _THINK = re.compile(r"<think>.*?</think>", re.S | re.I)
 _BLOCK = re.compile(r"<components>(.*?)</components>", re.S | re.I)

@@ -2,7 +2,13 @@
 
 Templates are named like the paper's ablation variants (CI* for component selection, MBS* for
 code generation); a run records which one it used. Placeholders: ``{description}``, ``{menu}``
-(the component list), ``{context}`` (documentation of the chosen components).
+(the component list), ``{context}`` (documentation of the chosen components). The paper names the
+variants but does not quote their texts; these are MecEng's own (docs/prompts.md).
+
+The code templates serve levels 1-2 and the assemblies (3b) alike, so their file rule allows the
+one file access an assembly needs, loading its parts (``fem.LoadFromFile('<part>.npz')``, which
+the assembly's description requires): a flat "do not read files" contradicted every assembly
+prompt (audit of issue 26). Levels 1-2 name no file, so for them the rule is unchanged in effect.
 """
 
 from __future__ import annotations
@@ -45,7 +51,7 @@ Catalog (name: purpose):
 {menu}
 
 Instructions:
-1. Identify the bodies (mass points or rigid bodies) and how they are connected.
+1. Identify the bodies (mass points, rigid bodies or flexible parts) and how they are connected.
 2. Identify loads, contacts and constraints.
 3. Choose every catalog component needed for steps 1 and 2; do not invent names.
 Output format (nothing else):
@@ -103,8 +109,9 @@ Rules:
 - Create bodies, nodes, connectors and loads in exactly the order given in the description;
   bodies in the order of their index.
 - Use the functions shown in the documentation, SI units and the values given in the description.
-- Do not read or write files, do not import os, sys, subprocess or similar modules, do not start a
-  renderer or any visualization and do not plot.
+- Do not write files and do not read files, except the part files the description tells you to load;
+  do not import os, sys, subprocess or similar modules, do not start a renderer or any visualization
+  and do not plot.
 - After the model is complete call mbs.Assemble(), then create
   simulationSettings = exu.SimulationSettings() with the end time and number of steps given in
   the description and call mbs.SolveDynamic(simulationSettings).
@@ -118,7 +125,8 @@ Exudyn documentation:
 
 Use `import exudyn as exu`, `from exudyn.utilities import *`, `SC = exu.SystemContainer()`,
 `mbs = SC.AddSystem()`; call `mbs.Assemble()` and then `mbs.SolveDynamic(simulationSettings)` with
-the end time and number of steps given above. No file I/O, no graphics. Put the program in one
+the end time and number of steps given above. No file I/O except loading the part files the
+description names, no graphics. Put the program in one
 ```python code block.
 """,
     "MBS3": """Role: expert in multibody dynamics and the Exudyn simulation code.
@@ -136,8 +144,8 @@ Requirements:
 2. Order: create items in the order stated in the description; bodies in the order of their index.
 3. Values: SI units; use exactly the numbers of the description; derive positions and rotations
    from the stated formulas.
-4. Forbidden: file reading or writing, imports of os/sys/subprocess/socket, renderer,
-   visualization, plots.
+4. Forbidden: writing files, reading files other than the part files the description tells you to
+   load, imports of os/sys/subprocess/socket, renderer, visualization, plots.
 5. Ending: mbs.Assemble(); simulationSettings = exu.SimulationSettings() with endTime and
    numberOfSteps from the description; mbs.SolveDynamic(simulationSettings).
 6. Answer: one ```python code block with the whole program.
@@ -223,6 +231,22 @@ def code_prompt(template: str, description: str, context: str) -> str:
     context = context or "(no components were chosen; use your knowledge of Exudyn)"
     templates = PART_CODE_TEMPLATES if template in PART_CODE_TEMPLATES else CODE_TEMPLATES
     return templates[template].format(description=description, context=context)
+
+
+REPAIR_NOTE = """
+The following program was written for this task. It contains a modelling error: the system it builds
+differs from the description in one respect. Find the error, fix it, and give the whole corrected
+program in a single ```python code block.
+
+```python
+{draft}
+```
+"""
+
+
+def repair_prompt(template: str, description: str, context: str, draft: str) -> str:
+    """The repair benchmark's question: the task's code prompt, then the faulty program."""
+    return code_prompt(template, description, context) + REPAIR_NOTE.format(draft=draft.rstrip())
 
 
 def gold_selection(names: tuple[str, ...] | list[str]) -> str:

@@ -5,6 +5,13 @@ parallel slots, then answers 503); code requests go before selections; transient
 connection errors, timeouts, 408/429/5xx (529 included) — are retried with exponential backoff or after the
 server's Retry-After; other 4xx errors (unknown model, unsupported option) are permanent. An
 endpoint that keeps failing is taken out for a while.
+
+A server that stops answering (every request times out or finds no connection) must not hold a
+run for hours: after ``SILENT_AFTER`` requests in a row got no answer at all, requests for it are
+refused at once without being sent, except one at a time, after a pause, that checks whether it
+answers again. A run against a hung server thus ends in about two request timeouts, its tasks lost
+(and done by ``--resume``), whatever its number of tasks. Any HTTP answer, even an error, shows the
+server is alive: a busy server (429, 503) is retried as before, never refused.
 """
 
 from __future__ import annotations
@@ -24,6 +31,7 @@ log = get_logger(__name__)
 
 # 529: Anthropic's "overloaded"
 TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504, 529})
+SILENT_AFTER = 3  # requests in a row without any answer before the endpoint's requests are refused unsent
 
 
 class PrioritySlots:
@@ -84,11 +92,24 @@ class Endpoint:
     in_flight: int = 0
     failures: int = 0
     disabled_until: float = 0.0
+    silent: int = 0  # requests in a row that got no answer at all (timeout, no connection)
+    probing: bool = False  # a request is checking whether a silent endpoint answers again
 
     @property
     def free(self) -> int:
         # the second term counts the other runs of a sweep on shared slots (equal when unshared)
         return min(self.capacity - self.in_flight, self.slots.free - self.slots.waiting)
+
+    def admit(self, now: float) -> bool:
+        """Whether a request may be sent: always while the server answers; once it fell silent,
+        only one at a time after the pause (the others fail at once instead of waiting out a
+        timeout each)."""
+        if self.silent < SILENT_AFTER:
+            return True
+        if self.probing or now < self.disabled_until:
+            return False
+        self.probing = True
+        return True
 
 
 def _is_transient(exc: BaseException) -> bool:
@@ -154,11 +175,21 @@ class EndpointBackend:
             endpoint.in_flight += 1
         await endpoint.slots.acquire(PRIORITY.get(request.purpose, 1), self.rank)
         try:  # the slot is held for exactly one request
-            raw, wall = await self._send(endpoint, request)
+            if not endpoint.admit(time.monotonic()):
+                raise LLMError(f"{endpoint.host} gave no answer to {endpoint.silent} requests in a row: not sent",
+                               transient=True)
+            try:
+                raw, wall = await self._send(endpoint, request)
+            except LLMError as exc:
+                if exc.status is not None:  # an HTTP answer, even an error: the server is alive
+                    endpoint.silent = 0
+                raise
+            finally:
+                endpoint.probing = False
         finally:
             endpoint.slots.release()
             endpoint.in_flight -= 1
-        endpoint.failures = 0
+        endpoint.failures = endpoint.silent = 0
         return self._convert(raw, wall, endpoint.host)
 
     def _convert(self, raw: Any, wall: float, host: str) -> ChatResponse:
@@ -166,6 +197,11 @@ class EndpointBackend:
 
     async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
         raise NotImplementedError
+
+    def _note_silence(self, endpoint: Endpoint) -> None:
+        """A request that got no answer at all (timeout, refused or dropped connection)."""
+        endpoint.silent += 1
+        self._note_failure(endpoint, True)
 
     def _note_failure(self, endpoint: Endpoint, transient: bool) -> None:
         if transient:

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMError, user_messages
+from meceng.agents.llm import Backend, ChatRequest, ChatResponse, ContextExceeded, LLMError, user_messages
 from meceng.agents.parsing import extract_code, parse_components
 from meceng.agents.prompts import code_prompt, gold_code, gold_selection, select_prompt
 from meceng.tasks.base import TaskInstance
@@ -47,36 +47,60 @@ class Generation:
                 "infrastructure_error": self.infrastructure_error, "meta": self.meta}
 
 
-async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None]:
+def given_selection(instance: TaskInstance) -> Selection:
+    """A repair task's components: those the draft already uses (no request is made)."""
+    return Selection(prompt="", answer="", names=instance.required_components, meta={"given": True})
+
+
+def selection_prompt(instance: TaskInstance, catalog: Catalog, template: str) -> str:
+    """The component-selection prompt a model gets for ``instance`` (the pipeline's and
+    ``meceng tasks prompt``'s one source)."""
+    return select_prompt(template, instance.description, catalog.menu())
+
+
+def generation_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...] | list[str],
+                      template: str) -> str:
+    """The code prompt after the model chose ``names``: the description and the documentation of the
+    chosen components with their dependencies."""
+    return code_prompt(template, instance.description, catalog.context(names))
+
+
+async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None, dict[str, Any]]:
+    """The answer, or why there is none and, for a prompt the server's context cannot hold, its
+    numbers (the record's ``context_exceeded``)."""
     try:
-        return await backend.chat(request), None
+        return await backend.chat(request), None, {}
+    except ContextExceeded as exc:
+        return None, str(exc), {"context_exceeded": exc.to_json()}
     except LLMError as exc:
-        return None, str(exc)
+        return None, str(exc), {}
 
 
 async def choose_components(
     backend: Backend, instance: TaskInstance, catalog: Catalog, template: str = "CI1"
 ) -> Selection:
-    prompt = select_prompt(template, instance.description, catalog.menu())
+    prompt = selection_prompt(instance, catalog, template)
     request = ChatRequest(user_messages(prompt), "select", instance.key,
                           gold=gold_selection(instance.required_components))
-    response, failure = await _ask(backend, request)
+    response, failure, lost = await _ask(backend, request)
     if response is None:
-        return Selection(prompt, "", (), error=failure, infrastructure_error=failure)
+        return Selection(prompt, "", (), error=failure, infrastructure_error=failure, meta=lost)
     parsed = parse_components(response.content, catalog.names)
     return Selection(prompt, response.content, parsed.names, parsed.unknown, parsed.error,
                      meta=_meta(response, backend))
 
 
 async def generate_code(
-    backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1"
+    backend: Backend, instance: TaskInstance, catalog: Catalog, selection: Selection, template: str = "MBS1",
+    prompt: str | None = None,
 ) -> Generation:
-    prompt = code_prompt(template, instance.description, catalog.context(selection.names))
+    """The code request; ``prompt`` replaces the template's (a repair task's question)."""
+    prompt = prompt or generation_prompt(instance, catalog, selection.names, template)
     request = ChatRequest(user_messages(prompt), "code", instance.key,
                           gold=gold_code(instance.reference_program))
-    response, failure = await _ask(backend, request)
+    response, failure, lost = await _ask(backend, request)
     if response is None:
-        return Generation(prompt, "", None, error=failure, infrastructure_error=failure)
+        return Generation(prompt, "", None, error=failure, infrastructure_error=failure, meta=lost)
     extracted = extract_code(response.content)
     error = extracted.error
     if response.truncated and extracted.code is None:

@@ -8,6 +8,7 @@ what the description already states (end time and number of steps).
 
 from __future__ import annotations
 
+import base64
 import json
 from collections import Counter
 from dataclasses import dataclass, field, replace
@@ -17,27 +18,52 @@ from typing import Any
 import numpy as np
 
 from meceng.agents.catalog import Catalog
+from meceng.agents.inspect import snapshot as pictures
+from meceng.agents.inspect.answer import QUANTITIES, Ask, render
+from meceng.agents.inspect.view import build_view
 from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.executor import Execution, ExecutionLimits, execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
+_CODE = {"type": "string", "description": "the complete program, as you would answer it"}
+
 TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
     {
         "name": "simulate",
-        "description": ("Run a complete Exudyn program (as you would answer it) and report the stage it reached, "
-                        "its error if any, a summary of the system (items by type, degrees of freedom, redundant "
-                        "constraints, total mass, initial positions of the nodes) and the coordinates at a few "
-                        "times."),
-        "parameters": {"type": "object", "properties": {"code": {"type": "string", "description": "the program"}},
-                       "required": ["code"]},
+        "description": ("Run a complete Exudyn program and report what it built and how it moved, in the "
+                        "description's terms (global frame, SI units, the catalog's component names): every body "
+                        "with mass, centre of mass, principal inertia, initial position, angles and velocities; "
+                        "every connector with the bodies it joins, where, its free and locked directions, its "
+                        "parameters; every load with its vector; then the bodies' states at a few times and the "
+                        "range of every coordinate over the run. Long lists are cut and say how to ask for more."),
+        "parameters": {"type": "object", "properties": {
+            "code": _CODE,
+            "bodies": {"type": "array", "items": {"type": "integer"},
+                       "description": "object numbers (#n) of the bodies to show in full, with their connectors"},
+            "times": {"type": "array", "items": {"type": "number"},
+                      "description": "times (s) at which to report the states (default: half the end time "
+                                     "and the end time; at most eight)"},
+            "quantities": {"type": "array", "items": {"type": "string", "enum": list(QUANTITIES)},
+                           "description": "which states to report (default: all)"}},
+            "required": ["code"]},
+    },
+    {
+        "name": "snapshot",
+        "description": ("Draw the program's system at t = 0 and at a later time (default: the end time): "
+                        "rigid bodies as inertia-equivalent boxes, mass points as dots, ground, joints with their "
+                        "axes, springs and constraints as lines, contacts, forces as arrows; three orthogonal views "
+                        "and an isometric one."),
+        "parameters": {"type": "object", "properties": {
+            "code": _CODE, "time": {"type": "number", "description": "the second picture's time in s"}},
+            "required": ["code"]},
     },
     {
         "name": "self_check",
         "description": ("Check a program for problems that need no reference solution: errors, redundant "
                         "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
                         "Returns the degrees of freedom and a list of findings."),
-        "parameters": {"type": "object", "properties": {"code": {"type": "string"}}, "required": ["code"]},
+        "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
     },
     {
         "name": "list_components",
@@ -55,13 +81,22 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
 MESH_PART_SCHEMA: dict[str, Any] = {
     "name": "mesh_part",
     "description": ("Build, mesh and reduce a complete part program (as you would answer it) and report what "
-                    "it made: stage, error, volume, mass, bounding box, every interface with its area and centre, "
-                    "the first eigenfrequencies and the number of nodes. The program must hard-code maxh."),
-    "parameters": {"type": "object", "properties": {"code": {"type": "string", "description": "the part program"}},
-                   "required": ["code"]},
+                    "it made: stage, error, volume, mass, bounding box, every interface with its area, centre, mean "
+                    "outward normal and number of faces, the eigenfrequencies of the fixed-interface normal modes "
+                    "of its Hurty-Craig-Bampton reduction, and the number of nodes. The program must hard-code maxh."),
+    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
 }
 
-SAMPLES = 5
+PART_SNAPSHOT_SCHEMA: dict[str, Any] = {
+    "name": "snapshot",
+    "description": ("Mesh a complete part program and draw the part: three orthogonal views and an isometric one, "
+                    "its interfaces coloured and named."),
+    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
+}
+
+FREQUENCIES_NOTE = ("fixed-interface normal modes of the Hurty-Craig-Bampton reduction (every interface clamped), "
+                    "lowest first, in Hz")
+
 MAX_TEXT = 1500
 ENERGY_MARK = "MECENG_ENERGY "
 
@@ -103,6 +138,14 @@ def _meceng_energy(mbs):
 """
 
 
+@dataclass(frozen=True)
+class ToolResult:
+    """A tool's answer: text, and pictures (base64 PNG) for a model that takes images."""
+
+    text: str
+    images: tuple[str, ...] = ()
+
+
 @dataclass
 class Toolbox:
     """Tools bound to one task instance (its stated simulation time) and one executor."""
@@ -113,55 +156,70 @@ class Toolbox:
     pool: WarmPool | None = None
     calls: Counter[str] = field(default_factory=Counter)
     files: dict[str, Path] | None = None  # the saved parts an assembly's program loads
+    vision: bool = False  # snapshot answers with a picture (else with its description in words)
 
     @property
     def schemas(self) -> tuple[dict[str, Any], ...]:
-        """A part is meshed, not simulated: it gets ``mesh_part`` instead of the simulator tools."""
+        """A part is meshed, not simulated: it gets ``mesh_part`` and its own snapshot instead."""
         if self.instance.kind == "part":
-            return (MESH_PART_SCHEMA, *(t for t in TOOL_SCHEMAS if t["name"] in ("list_components", "component_docs")))
+            return (MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA,
+                    *(t for t in TOOL_SCHEMAS if t["name"] in ("list_components", "component_docs")))
         return TOOL_SCHEMAS
 
-    async def call(self, name: str, arguments: dict[str, Any]) -> str:
+    async def call(self, name: str, arguments: dict[str, Any]) -> ToolResult:
         """Run a tool; unknown tools and bad arguments are answered, never raised."""
         self.calls[name] += 1
+        if "_unparsed" in arguments:  # the backend could not read the call's arguments as JSON
+            return ToolResult(json.dumps({"error": f"the arguments of {name} are not valid JSON (cut off by the "
+                                                   f"answer limit?): {str(arguments['_unparsed'])[:200]}"}))
         try:
             if name not in {t["name"] for t in self.schemas}:
                 raise LookupError(name)
             if name == "mesh_part":
-                return json.dumps(await self.mesh_part(str(arguments["code"])))
+                return ToolResult(json.dumps(await self.mesh_part(str(arguments["code"]))))
             if name == "simulate":
-                return json.dumps(await self.simulate(str(arguments["code"])))
+                return ToolResult(await self.simulate(str(arguments["code"]), _ask(arguments),
+                                                      _times(arguments.get("times"))))
+            if name == "snapshot":
+                return await self.snapshot(str(arguments["code"]), arguments.get("time"))
             if name == "self_check":
-                return json.dumps(await self.self_check(str(arguments["code"])))
+                return ToolResult(json.dumps(await self.self_check(str(arguments["code"]))))
             if name == "list_components":
-                return self.catalog.menu()
+                return ToolResult(self.catalog.menu())
             if name == "component_docs":
                 names = arguments.get("names") or []
                 if isinstance(names, str):
                     names = [n.strip() for n in names.split(",")]
                 unknown = [n for n in names if n not in self.catalog]
                 text = self.catalog.context([n for n in names if n in self.catalog])
-                return text + (f"\n\nUnknown components: {', '.join(unknown)}" if unknown else "")
+                return ToolResult(text + (f"\n\nUnknown components: {', '.join(unknown)}" if unknown else ""))
         except KeyError as exc:
-            return json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"})
+            return ToolResult(json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"}))
+        except (TypeError, ValueError) as exc:
+            return ToolResult(json.dumps({"error": f"bad arguments for tool {name}: {exc}"}))
         except LookupError:
             pass
-        return json.dumps({"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in self.schemas)}"})
+        return ToolResult(json.dumps(
+            {"error": f"unknown tool {name!r}; tools: {', '.join(t['name'] for t in self.schemas)}"}))
 
-    async def mesh_part(self, code: str) -> dict[str, Any]:
+    async def _mesh(self, code: str) -> tuple[Execution | None, dict[str, Any]]:
         """The part program's own part: nothing of the ground truth (the finest allowed maxh is
         half the size the description states)."""
         stated = self.instance.part.maxh
         check = check_mesh_size(code, stated / 2)
         if check.code is None:
-            return {"stage": "flagged", "error": check.error}
+            return None, {"stage": "flagged", "error": check.error}
         limits = replace(self.limits, mode="part", n_modes=self.instance.part.n_modes,
                          timeout_s=max(self.limits.timeout_s, 300.0))
         run = await execute(check.code, "", limits, pool=self.pool)
         report: dict[str, Any] = {"stage": run.stage, "error": _trim(run.error)}
         if check.raised:
             report["note"] = f"maxh below {stated / 2:g} m was raised to {stated / 2:g} m"
-        part = run.part
+        return run, report
+
+    async def mesh_part(self, code: str) -> dict[str, Any]:
+        run, report = await self._mesh(code)
+        part = run.part if run is not None else None
         if part is not None:
             geometry = part.get("geometry") or {}
             report.update(
@@ -169,10 +227,12 @@ class Toolbox:
                 material={"youngsModulus": part["youngs_modulus"], "poissonsRatio": part["poissons_ratio"],
                           "density": part["density"]},
                 interfaces=geometry.get("interfaces") or {n: None for n in part["interfaces"]},
-                eigenfrequencies_hz=[round(f, 4) for f in part["eigenfrequencies"][:8]], nodes=part["nodes"])
-        return report
+                eigenfrequencies_hz=[round(f, 4) for f in part["eigenfrequencies"][:8]],
+                eigenfrequencies_are=FREQUENCIES_NOTE, nodes=part["nodes"])
+        return _rounded(report)
 
-    async def _run(self, code: str, energy: bool = False) -> Execution:
+    async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None
+                   ) -> Execution:
         # only the time span of the description; none of the ground truth's solver extras
         sim = self.instance.sim
         if sim is None:
@@ -183,16 +243,42 @@ class Toolbox:
             block = ENERGY_CODE + block.replace(solve, (
                 "_e0 = _meceng_energy(mbs)\n" + solve + "\n"
                 f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
-        return await execute(code, block, self.limits, pool=self.pool, files=self.files)
+        limits = self.limits if inspect_times is None else replace(self.limits, inspect_times=inspect_times)
+        return await execute(code, block, limits, pool=self.pool, files=self.files)
 
-    async def simulate(self, code: str) -> dict[str, Any]:
-        run = await self._run(code)
-        report: dict[str, Any] = {"stage": run.stage, "error": _trim(run.error)}
-        if run.items is not None:
-            report["system"] = system_summary(run.items, run.system)
-        if run.times is not None and run.trajectory is not None and len(run.times):
-            report["samples"] = sample(run.times, run.trajectory)
-        return report
+    def _end_time(self) -> float:
+        return self.instance.sim.end_time if self.instance.sim is not None else 0.0
+
+    async def simulate(self, code: str, ask: Ask | None = None, times: tuple[float, ...] = ()) -> str:
+        end = self._end_time()
+        run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
+        if run.items is None:
+            return json.dumps({"stage": run.stage, "error": _trim(run.error)})
+        view = build_view(run.items, run.system, run.inspection, run.trajectory)
+        return render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
+
+    async def snapshot(self, code: str, time: Any = None) -> ToolResult:
+        if self.instance.kind == "part":
+            run, report = await self._mesh(code)
+            if run is None or run.surface is None:
+                return ToolResult(json.dumps(report))
+            interfaces = ((run.part or {}).get("geometry") or {}).get("interfaces") or {}
+            png = pictures.draw_part(run.surface, interfaces)
+            text = pictures.describe_part(run.surface, interfaces)
+        else:
+            end = self._end_time()
+            at = _clip(_times(time), end)[:1] or (end,)
+            run = await self._run(code, inspect_times=at)
+            if run.items is None:
+                return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))
+            view = build_view(run.items, run.system, run.inspection, run.trajectory)
+            png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
+            text = pictures.describe(view, (0.0, at[0]))
+            if run.error:
+                text = f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}\n" + text
+        if self.vision:
+            return ToolResult("the picture of your program's system follows", (base64.b64encode(png).decode(),))
+        return ToolResult("the picture in words (this model takes no images):\n" + text)
 
     async def self_check(self, code: str) -> dict[str, Any]:
         run = await self._run(code, energy=True)
@@ -250,24 +336,32 @@ def _node_positions(items: dict[str, list[dict[str, Any]]]) -> list[list[float]]
     return out
 
 
-def system_summary(items: dict[str, list[dict[str, Any]]], system: dict[str, Any]) -> dict[str, Any]:
-    """What the program built: item types, DOF, total mass, initial node positions."""
-    types = Counter(str(o.get("objectType")) for o in items.get("objects", []))
-    loads = Counter(str(load.get("loadType")) for load in items.get("loads", []))
-    total_mass = sum(float(o["mass"]) for o in items.get("objects", []) if isinstance(o.get("mass"), int | float))
-    return {
-        "objects": dict(types),
-        "loads": dict(loads),
-        "nodes": len(items.get("nodes", [])),
-        "markers": len(items.get("markers", [])),
-        "degrees_of_freedom": system.get("degreeOfFreedom"),
-        "redundant_constraints": system.get("redundantConstraints"),
-        "total_mass": round(total_mass, 9),
-        "initial_node_positions": [[round(x, 9) for x in p] for p in _node_positions(items)][:30],
-    }
+def _rounded(value: Any) -> Any:
+    """Six significant digits; round-off (below 1e-12) as 0: numbers a model reads, not noise."""
+    if isinstance(value, float):
+        return 0.0 if abs(value) < 1e-12 else float(f"{value:.6g}")
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_rounded(v) for v in value]
+    return value
 
 
-def sample(times: np.ndarray, q: np.ndarray, count: int = SAMPLES) -> list[dict[str, Any]]:
-    """q_ref + q of the first coordinates at ``count`` evenly spread times."""
-    picks = np.linspace(0, len(times) - 1, count).round().astype(int)
-    return [{"t": round(float(times[i]), 6), "q": [round(float(x), 6) for x in q[i, :12]]} for i in picks]
+def _ask(arguments: dict[str, Any]) -> Ask:
+    bodies = tuple(int(b) for b in arguments.get("bodies") or () if str(b).lstrip("#").isdigit()
+                   for b in [str(b).lstrip("#")])
+    quantities = tuple(q for q in arguments.get("quantities") or () if q in QUANTITIES) or QUANTITIES
+    return Ask(bodies=bodies, quantities=quantities)
+
+
+def _times(values: Any) -> tuple[float, ...]:
+    if values is None:
+        return ()
+    if not isinstance(values, list | tuple):
+        values = [values]
+    return tuple(float(v) for v in values)
+
+
+def _clip(times: tuple[float, ...], end: float) -> tuple[float, ...]:
+    """Requested times inside the run, at most eight of them."""
+    return tuple(sorted({min(max(t, 0.0), end) for t in times}))[:8]

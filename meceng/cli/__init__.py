@@ -1,4 +1,4 @@
-"""Command line: ``meceng tasks|evaluate|run|report|view|rescore``.
+"""Command line: ``meceng tasks|evaluate|drafts|run|report|view|rescore``.
 
 Exit codes: 0 success, 1 the graded program failed (``evaluate``), 2 wrong usage or unknown task.
 """
@@ -10,13 +10,16 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
 from meceng.cli.arguments import LEVELS, add_run_arguments, parse_levels, parse_think, positive_int
 from meceng.cli.commands import (
+    cmd_drafts,
     cmd_evaluate,
     cmd_report,
     cmd_rescore,
     cmd_run,
     cmd_tasks_list,
+    cmd_tasks_prompt,
     cmd_tasks_reference,
     cmd_tasks_show,
     cmd_view,
@@ -62,6 +65,17 @@ def build_parser() -> argparse.ArgumentParser:
         if name == "show":
             p.add_argument("--json", action="store_true")
         p.set_defaults(func=func)
+    p = tsub.add_parser("prompt", help="print the prompts a model gets for one task instance")
+    p.add_argument("slug", help="task slug or paper id")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--select-template", choices=tuple(SELECT_TEMPLATES), default=DEFAULT_SELECT,
+                   help="selection template (levels 1, 2, 3b; a part always gets PART1)")
+    p.add_argument("--code-template", choices=tuple(CODE_TEMPLATES), default=DEFAULT_CODE,
+                   help="code template (levels 1, 2, 3b; a part always gets PART1)")
+    p.add_argument("--agent", choices=("pipeline", "loop"), default="pipeline",
+                   help="loop: the code prompt with the agent's note on its tools, as --agent loop sends it")
+    p.add_argument("--json", action="store_true", help="a list of {key, kind, stage, template, text}")
+    p.set_defaults(func=cmd_tasks_prompt)
 
     p = sub.add_parser("evaluate", help="grade a program against a task instance")
     p.add_argument("slug")
@@ -71,6 +85,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--timeout", type=float, default=60.0)
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_evaluate)
+
+    p = sub.add_parser("drafts", help="an instance's repair drafts: its ground truth with one seeded fault each")
+    p.add_argument("slug", help="task slug or paper id")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--json", action="store_true", help="every draft with its program and the grader's verdict")
+    p.set_defaults(func=cmd_drafts)
 
     p = sub.add_parser("report", help="HTML, Markdown and PNG report from runs")
     p.add_argument("runs", nargs="+", type=Path, help="run folders, run.json files or sweep output folders")

@@ -27,6 +27,16 @@ def parse_levels(text: str) -> tuple[str, ...]:
     return levels
 
 
+def parse_only(values: list[str] | None) -> tuple[str, ...]:
+    """``--only`` given once or more, each comma-separated, as task keys; a key that names no task
+    model is refused here (``UnknownTaskError``, a ``ValueError``), before anything starts."""
+    from meceng.tasks.registry import default_registry
+
+    only = tuple(x.strip() for part in values or () for x in part.split(",") if x.strip())
+    default_registry().check(only)
+    return only
+
+
 def positive_int(text: str) -> int:
     value = int(text)
     if value < 1:
@@ -59,6 +69,10 @@ def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--api-key-env", default=None, metavar="VARIABLE",
                         help="environment variable holding the API key (default OPENAI_API_KEY, "
                              "ANTHROPIC_API_KEY); the key itself is never written anywhere")
+    parser.add_argument("--vision", action="store_true",
+                        help="the model takes images: in --agent loop a picture of the program's system goes to "
+                             "it (Anthropic image blocks, OpenAI image_url parts, Ollama images) instead of a text "
+                             "description; the gold backend ignores it")
     parser.add_argument("--temperature", type=float, default=None, help="sampling temperature (default 0)")
     parser.add_argument("--llm-seed", type=int, default=42, help="sampling seed sent to the server")
     parser.add_argument("--think", type=parse_think, default=False, help="on/off or low/medium/high")
@@ -82,8 +96,13 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="fork: warm fork server (default); subprocess: a cold interpreter per program")
-    parser.add_argument("--agent", choices=("pipeline", "loop"), default="pipeline",
-                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs")
+    parser.add_argument("--agent", choices=("pipeline", "loop", "repair"), default="pipeline",
+                        help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs; "
+                             "repair: the repair benchmark (find and fix the seeded fault of a draft)")
+    parser.add_argument("--tools", choices=("on", "off"), default="on",
+                        help="--agent repair: with the agent's tools (simulate, snapshot, ...) or a single answer")
+    parser.add_argument("--drafts-per-task", type=positive_int, default=1,
+                        help="--agent repair: failing drafts per task instance")
     parser.add_argument("--max-rounds", type=positive_int, default=6, help="model calls per task in --agent loop")
     parser.add_argument("--token-budget", type=positive_int, default=30000,
                         help="completion tokens per task in --agent loop")
@@ -92,7 +111,8 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-progress", action="store_true")
     parser.add_argument("--resume", type=Path, default=None, metavar="RUN_DIR",
                         help="continue a killed run in RUN_DIR with its saved settings (--host, if given, "
-                             "replaces the saved servers)")
+                             "replaces the saved servers and asks again the prompts that did not fit the old "
+                             "server's context)")
 
 
 def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
@@ -107,7 +127,7 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
         model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
         api_defaults=args.api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
         think=args.think if think is None else think, num_ctx=args.num_ctx, num_predict=args.num_predict,
-        batch_size=args.batch_size, timeout_s=args.llm_timeout,
+        batch_size=args.batch_size, timeout_s=args.llm_timeout, vision=args.vision,
     )
     if settings.api_defaults and args.temperature is not None:  # it would be dropped without a word
         why = ("Anthropic's API (version 2026-10-21) takes no sampling parameters" if backend == "anthropic"
@@ -125,12 +145,14 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
     if args.code_template not in CODE_TEMPLATES:
         raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
                          f"choose from {', '.join(CODE_TEMPLATES)}")
+    only = parse_only(args.only)
     return RunSettings(
-        llm=llm, levels=args.levels, only=tuple(x.strip() for part in args.only for x in part.split(",") if x.strip()),
+        llm=llm, levels=args.levels, only=only,
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,
         progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
+        repair_tools=args.tools == "on", drafts_per_task=args.drafts_per_task,
         token_budget=args.token_budget,
     )
 
@@ -146,5 +168,6 @@ def resumed_settings(args: argparse.Namespace) -> RunSettings:
 
     settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
     if args.host:  # where the server is now: not part of what the run measures
-        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)))
+        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)),
+                                       retry_overflow=True)
     return dataclasses.replace(settings, progress=not args.no_progress)

@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
-from meceng.tasks.registry import default_registry
+from meceng.tasks.registry import UnknownTaskError, default_registry
 
 
 def cmd_tasks_list(args: argparse.Namespace) -> int:
@@ -36,8 +36,8 @@ def _instance(args: argparse.Namespace) -> Any:
     registry = default_registry()
     try:
         model = registry.get(args.slug)
-    except KeyError as exc:
-        print(f"error: {exc.args[0]}", file=sys.stderr)
+    except UnknownTaskError as exc:
+        print(f"error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
     return model.instance(args.seed)
 
@@ -57,6 +57,24 @@ def cmd_tasks_show(args: argparse.Namespace) -> int:
 
 def cmd_tasks_reference(args: argparse.Namespace) -> int:
     print(_instance(args).reference_program, end="")
+    return 0
+
+
+def cmd_tasks_prompt(args: argparse.Namespace) -> int:
+    """The prompts exactly as a run sends them (the code prompt as after choosing the required
+    components), each under a header line that is not part of it."""
+    from meceng.pipeline import RunSettings, instance_prompts
+
+    settings = RunSettings(select_template=args.select_template, code_template=args.code_template,
+                           agent=args.agent)
+    prompts = instance_prompts(_instance(args), settings)
+    if args.json:
+        print(json.dumps([vars(p) for p in prompts], indent=1))
+        return 0
+    for prompt in prompts:
+        what = "component selection" if prompt.stage == "select" else "program"
+        print(f"===== {prompt.key} ({prompt.kind}): {what} prompt, template {prompt.template} =====")
+        print(prompt.text.rstrip("\n") + "\n")
     return 0
 
 
@@ -89,6 +107,28 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
     return 0 if verdict.overall else 1
 
 
+def cmd_drafts(args: argparse.Namespace) -> int:
+    from meceng.pipeline.drafts import drafts_of
+
+    instance = _instance(args)
+    if instance.kind == "assembly":
+        print(f"error: {instance.slug} is an assembly: drafts exist for levels 1, 2 and 3a", file=sys.stderr)
+        return 2
+    graded = asyncio.run(drafts_of(instance))
+    if args.json:
+        print(json.dumps({"task": instance.slug, "seed": instance.seed,
+                          "drafts": [g.to_json() for g in graded]}, indent=1))
+        return 0
+    print(f"{instance.slug}@{instance.seed}: {len(graded)} drafts, {sum(g.fails for g in graded)} fail the grader")
+    for g in graded:
+        verdict = (f"fails at {g.first_failure}" + (f" ({', '.join(g.categories)})" if g.categories else "")
+                   if g.fails else "passes (not used)")
+        agree = "" if not g.fails else "  label = grader" if g.agrees else "  LABEL ≠ GRADER"
+        print(f"- {g.draft.id:<18} [{g.draft.label}] line {g.draft.line}: {g.draft.fault}\n"
+              f"  {verdict}{agree}")
+    return 0
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from meceng.logs import configure_logging
     from meceng.pipeline import run_benchmark
@@ -117,21 +157,43 @@ def print_summary(run_json: Path) -> None:
     # one line per level: parts and assemblies have different stages, a mixed rate would mislead
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
-        lost_here = block.get("infrastructure_failures") or 0
+        unfit_here = block.get("context_exceeded") or 0
+        lost_here = (block.get("infrastructure_failures") or 0) - unfit_here
         if not block["counted"]:
             line = "nothing graded"
         print(f"level {level} ({block['counted']}): {line}"
-              + (f"  [{lost_here} lost to the server]" if lost_here else ""))
+              + (f"  [{lost_here} lost to the server]" if lost_here else "")
+              + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
     totals = summary.get("tokens", {}).get("totals")
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
               f"(of which {totals['reasoning']:,} reasoning)")
-    lost = next((t for t in run["tasks"] if t.get("first_failure") == "infrastructure"), None)
-    if lost is not None:
-        count = summary["infrastructure_failures"]
+    lost = [t for t in run["tasks"] if t.get("first_failure") == "infrastructure"]
+    unfit = [t["context_exceeded"] for t in lost if t.get("context_exceeded")]
+    if unfit:
+        print(overflow_summary(unfit, run_json.parent))
+    lost = [t for t in lost if not t.get("context_exceeded")]
+    if lost:
+        count = len(lost)
         print(f"{count} task{'s' if count != 1 else ''} lost to the server, left out of the rates; the first: "
-              f"{lost['slug']} seed {lost['seed']}: {lost.get('infrastructure_error')}\n"
+              f"{lost[0]['slug']} seed {lost[0]['seed']}: {lost[0].get('infrastructure_error')}\n"
               f"redo them once that is fixed: meceng run --resume {run_json.parent}")
+
+
+def overflow_summary(unfit: list[dict[str, Any]], run_dir: Path) -> str:
+    """What the prompts that did not fit the server's context need, said once for all of them."""
+    count = len(unfit)
+    prompts = [u["prompt_tokens"] for u in unfit if u.get("prompt_tokens")]
+    contexts = sorted({u["context"] for u in unfit if u.get("context")})
+    limit = max(u["answer_limit"] for u in unfit)
+    largest = f"the largest {max(prompts):,} prompt tokens + {limit:,} answer limit" if prompts else \
+        f"their prompt tokens + {limit:,} answer limit"
+    need = f"at least {max(prompts) + limit:,} tokens" if prompts else "a larger context"
+    return (f"{count} task{'s' if count != 1 else ''} not graded: the prompt did not fit the server's context of "
+            f"{', '.join(f'{c:,}' for c in contexts) or '?'} tokens ({largest}); left out of the rates, "
+            f"and a plain --resume keeps them (that server would refuse them again).\n"
+            f"grade them on a server with a context of {need}: "
+            f"meceng run --resume {run_dir} --host URL")
 
 
 def cmd_report(args: argparse.Namespace) -> int:

@@ -44,6 +44,8 @@ def stage_rates(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
     overall = sum(1 for r in counted if r.get("overall"))
     rates["overall"] = overall / n if n else None
     return {"tasks": len(records), "counted": n, "infrastructure_failures": len(records) - n,
+            # of those, prompts the server's context could not hold (a server setting, not a passing failure)
+            "context_exceeded": sum(1 for r in records if r.get("context_exceeded")),
             "passed": {**{k: passed[k] for k in order}, "overall": overall}, "rates": rates}
 
 
@@ -69,6 +71,20 @@ def agent_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
         "tool_calls": dict(tools),
         "stop_reasons": dict(Counter(r["agent"]["stop_reason"] for r in agents)),
     }
+
+
+def repair_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """The repair benchmark: drafts repaired, per fault label (the paper's category, or a part's fault)."""
+    drafts = [r for r in records if r.get("repair") and r.get("first_failure") != "infrastructure"]
+    if not drafts:
+        return None
+    by_label: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for r in drafts:
+        by_label[r["repair"]["label"]][0] += bool(r["repair"]["repaired"])
+        by_label[r["repair"]["label"]][1] += 1
+    return {"tasks": len(drafts), "repaired": sum(1 for r in drafts if r["repair"]["repaired"]),
+            "tools": bool(drafts[0]["repair"]["tools"]), "by_label": dict(sorted(by_label.items())),
+            "grader_agrees_with_label": sum(1 for r in drafts if (r["repair"].get("graded") or {}).get("agrees"))}
 
 
 def token_totals(records: Iterable[dict[str, Any]]) -> dict[str, int]:
@@ -114,6 +130,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
             "context_limit_hits": sum(1 for c in calls if c.get("context_limit_hit")),
         },
         "agent": agent_summary(records),
+        "repair": repair_summary(records),
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

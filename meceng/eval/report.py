@@ -315,6 +315,38 @@ def component_series(runs: list[Run]) -> dict[str, dict[str, Rate]]:
     return series(runs, "select_template", "choose_components")
 
 
+def repair_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """The repair benchmark per run: the share of drafts repaired, over all and per fault label."""
+    rows = []
+    for run in runs:
+        drafts = [t for t in run.graded() if t.get("repair")]
+        if not drafts:
+            continue
+        labels: dict[str, list[dict[str, Any]]] = defaultdict(list)
+        for t in drafts:
+            labels[t["repair"]["label"]].append(t)
+        rows.append({"run": run.label, "model": run.model, "tools": bool(drafts[0]["repair"]["tools"]),
+                     "overall": _repaired(drafts), "labels": {k: _repaired(v) for k, v in sorted(labels.items())}})
+    return rows
+
+
+def _repaired(drafts: list[dict[str, Any]]) -> Rate:
+    return Rate(sum(1 for t in drafts if t["repair"]["repaired"]), len(drafts))
+
+
+def tools_contribution(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Per model with runs of both kinds: repaired with tools minus without, in points."""
+    out = []
+    for model in dict.fromkeys(r["model"] for r in rows):
+        on = [r for r in rows if r["model"] == model and r["tools"]]
+        off = [r for r in rows if r["model"] == model and not r["tools"]]
+        if on and off:
+            a, b = on[0]["overall"], off[0]["overall"]
+            out.append({"model": model, "with": a, "without": b,
+                        "points": None if a.value is None or b.value is None else 100 * (a.value - b.value)})
+    return out
+
+
 def difficulty(runs: list[Run]) -> list[dict[str, Any]]:
     """Fig. 11: per task model, 1 - mean overall success over all runs; hardest first."""
     groups: dict[str, list[dict[str, Any]]] = defaultdict(list)

@@ -10,19 +10,21 @@ Modules, each one concern:
 - ``records``: the task record and its variants (lost to infrastructure, not started, failed);
 - ``rundir``: the run folder (journal, programs, parts, run.json);
 - ``run``: the run loop (``run_benchmark``) and what ``--resume`` keeps;
-- ``rescore``: grading outside a run (``evaluate_program``, ``rescore``).
+- ``rescore``: grading outside a run (``evaluate_program``, ``rescore``);
+- ``prompting``: the prompts a model gets for one instance (``meceng tasks prompt``, the prompt lint).
 """
 
 from .evaluation import Evaluator, ReferenceCache
 from .flow import FlowContext, run_flow, run_instance
 from .kinds import AssemblyKind, Graded, PartKind, RigidKind, TaskKind
+from .prompting import RenderedPrompt, instance_prompts
 from .rescore import evaluate_program, rescore
 from .run import run_benchmark
 from .rundir import RunWriter, record_key, versions
 from .settings import RunSettings
 
 __all__ = [
-    "AssemblyKind", "Evaluator", "FlowContext", "Graded", "PartKind", "ReferenceCache", "RigidKind", "RunSettings",
-    "RunWriter", "TaskKind", "evaluate_program", "record_key", "rescore", "run_benchmark", "run_flow",
-    "run_instance", "versions",
+    "AssemblyKind", "Evaluator", "FlowContext", "Graded", "PartKind", "ReferenceCache", "RenderedPrompt", "RigidKind",
+    "RunSettings", "RunWriter", "TaskKind", "evaluate_program", "instance_prompts", "record_key", "rescore",
+    "run_benchmark", "run_flow", "run_instance", "versions",
 ]

@@ -104,8 +104,11 @@ class Evaluator:
 
     async def execute(self, program: str, instance: TaskInstance, check: bool,
                       files: dict[str, Path] | None = None) -> Execution:
+        # the states at t = 0 and at the end: the viewer's pictures of the system (reading them does not
+        # touch the solution)
+        limits = replace(self.limits, inspect_times=(instance.sim.end_time,))
         async with self.slots:
-            return await execute(program, instance.sim.block(), self.limits, check=check, pool=self.pool, files=files)
+            return await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files)
 
     async def execute_part(self, program: str, instance: TaskInstance, check: bool,
                            save_to: Path | None = None) -> Execution:

@@ -15,7 +15,8 @@ from typing import Any
 
 from meceng.agents.llm import Backend
 from meceng.agents.loop import run_agent
-from meceng.agents.steps import choose_components, generate_code
+from meceng.agents.prompts import repair_prompt
+from meceng.agents.steps import choose_components, generate_code, given_selection
 from meceng.agents.toolbox import Toolbox
 from meceng.eval.chain import RIGID_STAGES, StageResult, Verdict
 from meceng.tasks.base import TaskInstance
@@ -52,18 +53,26 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     select_template, code_template = settings.templates(instance.kind)
-    selection = await choose_components(ctx.backend, instance, kind.catalog, select_template)
+    repair = instance.draft is not None
+    if repair:  # the draft already chose its components: no selection request
+        selection = given_selection(instance)
+    else:
+        selection = await choose_components(ctx.backend, instance, kind.catalog, select_template)
     if selection.infrastructure_error is not None:  # no code request with a context the model never chose
         return lost_record(instance, selection.infrastructure_error, _times(t0, time.perf_counter()),
                            selection=selection)
+    question = (repair_prompt(code_template, instance.description, kind.catalog.context(selection.names),
+                              instance.draft.program) if repair else None)
     agent = None
-    if settings.agent == "loop":
-        toolbox = Toolbox(instance, kind.catalog, kind.limits, evaluator.pool, files=kind.files)
+    if settings.agent == "loop" or (repair and settings.repair_tools):
+        toolbox = Toolbox(instance, kind.catalog, kind.limits, evaluator.pool, files=kind.files,
+                          vision=settings.llm.vision)
         agent = await run_agent(ctx.backend, instance, kind.catalog, selection, toolbox, template=code_template,
-                                max_rounds=settings.max_rounds, token_budget=settings.token_budget)
+                                max_rounds=settings.max_rounds, token_budget=settings.token_budget, prompt=question)
         generation = agent_generation(agent)
     else:
-        generation = await generate_code(ctx.backend, instance, kind.catalog, selection, code_template)
+        generation = await generate_code(ctx.backend, instance, kind.catalog, selection, code_template,
+                                         prompt=question)
     t_llm = time.perf_counter()
     if generation.infrastructure_error is not None:
         return lost_record(instance, generation.infrastructure_error, _times(t0, t_llm),
@@ -83,6 +92,9 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
         record["files"]["traces"] = traces
     if agent is not None:
         record["agent"] = agent_block(agent, first)
+    if repair:
+        record["repair"] = {**instance.draft.to_json(), "tools": settings.repair_tools,
+                            "repaired": graded.verdict.overall}
     return record
 
 

@@ -3,6 +3,9 @@
 One record shape for every level; a task kind adds its own block (``part``, ``parts``), an agent
 run adds ``agent``. A record whose task was lost to the server or the harness says so with
 ``first_failure: "infrastructure"``: it is left out of the rates and done again by ``--resume``.
+A lost task whose prompt the server's context could not hold says so too, with the numbers
+(``context_exceeded``): the same server would refuse it again, so ``--resume`` keeps it unless the
+run is resumed on a server the user names.
 """
 
 from __future__ import annotations
@@ -79,6 +82,10 @@ def lost_record(instance: TaskInstance, reason: str, timing: dict[str, float], *
         record["selection"] = selection.to_json()
     if generation is not None:
         record["generation"] = generation.to_json()
+    overflow = next((s.meta["context_exceeded"] for s in (selection, generation)
+                     if s is not None and s.meta.get("context_exceeded")), None)
+    if overflow is not None:
+        record["context_exceeded"] = overflow
     return record
 
 
@@ -114,4 +121,5 @@ def agent_generation(agent: AgentResult) -> Generation:
                       code=agent.final_code, error=agent.error, infrastructure_error=agent.infrastructure_error,
                       meta={"completion_tokens": agent.completion_tokens, "prompt_tokens": agent.prompt_tokens,
                             "reasoning_tokens": agent.reasoning_tokens,
-                            "context_used": agent.prompt_tokens + agent.completion_tokens})
+                            "context_used": agent.prompt_tokens + agent.completion_tokens,
+                            **({"context_exceeded": agent.context_exceeded} if agent.context_exceeded else {})})

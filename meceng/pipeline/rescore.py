@@ -92,8 +92,11 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
                                graded.reference)
         if traces is not None:  # the plots follow the new grading
             files["traces"] = traces
-        return {**record, **graded.verdict.to_json(), "execution": graded.candidate.summary(),
-                "reference_execution": graded.reference.summary(), "evaluator": EVALUATOR_VERSION, "files": files}
+        regraded = {**record, **graded.verdict.to_json(), "execution": graded.candidate.summary(),
+                    "reference_execution": graded.reference.summary(), "evaluator": EVALUATOR_VERSION, "files": files}
+        if record.get("repair"):  # a repair task: whether the draft was repaired follows the new grading
+            regraded["repair"] = {**record["repair"], "repaired": graded.verdict.overall}
+        return regraded
 
     try:
         run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))

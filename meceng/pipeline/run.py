@@ -28,6 +28,7 @@ from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import ExecutionLimits, child_env
 from meceng.tools.warm import WarmPool
 
+from .drafts import repair_instances
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
 from .grading import GradingPool
@@ -40,11 +41,14 @@ from .settings import RunSettings
 log = get_logger("meceng.pipeline")
 
 
-def resumable(finished: list[dict[str, Any]]) -> dict[str, dict[str, Any]]:
+def resumable(finished: list[dict[str, Any]], retry_overflow: bool = False) -> dict[str, dict[str, Any]]:
     """The records a resumed run keeps, by instance key: the last record of a task wins; tasks
-    lost to infrastructure are done again, and so are the parts of an assembly that is."""
+    lost to infrastructure are done again, and so are the parts of an assembly that is. A prompt
+    that did not fit the server's context is kept (that server would refuse it again) unless
+    ``retry_overflow``: the run resumes on a server the user named."""
     latest = {record_key(r): r for r in finished}
-    done = {k: r for k, r in latest.items() if r.get("first_failure") != "infrastructure"}
+    done = {k: r for k, r in latest.items() if r.get("first_failure") != "infrastructure"
+            or (r.get("context_exceeded") and not retry_overflow)}
     return {k: r for k, r in done.items() if not r.get("origin") or r["origin"] in done}
 
 
@@ -98,7 +102,7 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
         raise ValueError(f"{run_dir} already holds a run; resume it with --resume {run_dir}")
     if not (run_dir / "settings.json").exists():
         write_atomic(run_dir / "settings.json", json.dumps(settings.to_json(), indent=1))
-    kept = resumable(writer.finished)
+    kept = resumable(writer.finished, retry_overflow=settings.retry_overflow)
     records: list[dict[str, Any]] = [slim_record(r) for r in kept.values()]  # full records stay in the journal
     writer.finished = []
     done_keys = {k for k, r in kept.items() if not r.get("origin")}
@@ -113,6 +117,9 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           slots=shared.workers if shared is not None else None,
                           store=shared.store if shared is not None else None,
                           grading=shared.grading if shared is not None else GradingPool(settings.workers))
+    if settings.agent == "repair":  # the tasks are the instances' failing drafts, graded before the first request
+        instances = await repair_instances(instances, evaluator, settings.drafts_per_task)
+        todo = [i for i in instances if i.key not in done_keys]
     ctx = FlowContext(backend, evaluator, settings, writer)
     # enough tasks in flight to fill every LLM slot and every worker, not the whole sweep at once
     window = asyncio.Semaphore(settings.llm.batch_size * max(1, len(settings.llm.hosts)) * 2 + settings.workers + 2)

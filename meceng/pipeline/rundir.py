@@ -26,7 +26,7 @@ from meceng.tasks.base import TaskInstance, program_header
 
 def record_key(record: dict[str, Any]) -> str:
     """The key of the instance a record belongs to (a part drawn for an assembly names it)."""
-    own = f"{record['slug']}@{record['seed']}"
+    own = f"{record['slug']}@{record['seed']}" + (f"~{record['repair']['id']}" if record.get("repair") else "")
     return f"{record['origin']}/{own}" if record.get("origin") else own
 
 

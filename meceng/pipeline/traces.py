@@ -13,12 +13,15 @@ clustering to at most ~2000 triangles. A level 1-2 task costs ~5-25 kB, a part ~
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from meceng.agents.inspect.scene import build_scene
+from meceng.agents.inspect.view import build_view
 from meceng.eval.solution import resample
 from meceng.logs import get_logger
 
@@ -32,6 +35,7 @@ log = get_logger(__name__)
 MAX_POINTS = 200
 MAX_COORDINATES = 24
 MAX_TRIANGLES = 2000
+MAX_SCENE_ITEMS = 2000  # a larger system gets no picture (a hostile program's thousands of bodies)
 
 
 def safe_key(key: str) -> str:
@@ -113,7 +117,21 @@ def trace_arrays(candidate: Execution, reference: Execution) -> dict[str, np.nda
     for prefix, run in (("cand", candidate), ("ref", reference)):
         if run.surface is not None:
             arrays[f"{prefix}_vertices"], arrays[f"{prefix}_triangles"] = decimate_surface(*run.surface)
+    scenes = {prefix: system_scenes(run) for prefix, run in (("cand", candidate), ("ref", reference))}
+    if any(scenes.values()):
+        arrays["scenes"] = np.array(json.dumps(scenes))
     return arrays
+
+
+def system_scenes(run: Execution) -> dict[str, Any] | None:
+    """The system at t = 0 and at the end as drawable shapes (the viewer's pictures), or None."""
+    if run.items is None or not run.inspection or not run.inspection.get("states"):
+        return None
+    view = build_view(run.items, run.system, run.inspection)
+    if len(view.bodies) + len(view.connectors) > MAX_SCENE_ITEMS:
+        return None
+    return {"times": [view.times[0], view.times[-1]],
+            "shapes": [[shape.to_json() for shape in build_scene(view, t)] for t in (view.times[0], view.times[-1])]}
 
 
 def save_traces(run_dir: Path, key: str, candidate: Execution, reference: Execution) -> str | None:

@@ -22,7 +22,10 @@ import numpy as np
 from meceng.tasks.base import PREAMBLE, Param, SimSettings, TaskInstance, program_header, slugify
 from meceng.tasks.part_base import PartModel
 
-#: The paper's note (section 2.3), appended before the part descriptions.
+#: The paper's note (section 2.3), word for word, appended before the part descriptions. What follows
+#: it departs from the paper's "descriptions of the parts": one line per part with its name, the call
+#: that loads it (``fem.LoadFromFile('<name>.npz')``, so no model guesses how a name becomes a file),
+#: its geometry and material without the meshing instructions, and its interfaces (docs/prompts.md).
 PART_LOADING_INFO = (
     "Part Loading Info: You already have the {count} needed machine part(s) available as a Finite Element "
     "Method (FEM) model. Load the corresponding FEM interface(s) with their/its according name(s)!"

@@ -105,10 +105,11 @@ class TaskInstance:
     part: Any = None  # PartSpec of a part instance
     origin: str = ""  # key of the assembly instance a part was drawn for
     parts: tuple[tuple[str, TaskInstance], ...] = ()  # an assembly's (slot, part instance)
+    draft: Any = None  # a repair task's Draft (tasks.drafts): the program with a seeded fault
 
     @property
     def key(self) -> str:
-        own = f"{self.slug}@{self.seed}"
+        own = f"{self.slug}@{self.seed}" + (f"~{self.draft.id}" if self.draft is not None else "")
         return f"{self.origin}/{own}" if self.origin else own
 
     def to_json(self) -> dict[str, Any]:

@@ -22,8 +22,8 @@ TASK = TaskModel(
     description="""
         A billiard break with 4 equal balls (index 0 to 3) on a frictionless horizontal table in the
         x-y plane. Each ball is modeled as a mass point with mass m = {mass} kg and radius
-        r = {radius} m; the table is not modeled and gravity is neglected, so all balls stay in the
-        plane z = 0. The cue ball 0 starts at [0, {offset}, 0] m with the initial velocity
+        r = {radius} m; the table is not modeled (no ground object) and gravity is neglected, so all
+        balls stay in the plane z = 0. The cue ball 0 starts at [0, {offset}, 0] m with the initial velocity
         [{velocity}, 0, 0] m/s. The other three balls are at rest in a triangle: with the center
         distance s = 2*r + {gap} m (a gap of {gap} m between neighbouring balls), ball 1 is at
         [{distance}, 0, 0] m, ball 2 at [{distance} + s*sqrt(3)/2, s/2, 0] m and ball 3 at

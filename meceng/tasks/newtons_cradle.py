@@ -4,6 +4,18 @@ Four mass points on distance constraints with sphere-sphere contact between neig
 makes the solution sensitive; the end time is kept at one swing and a half so that a re-ordered but
 correct model stays within the 1e-5 solution tolerance.
 
+Where the text departs from the paper's quote, and why (docs/prompts.md):
+
+- the contact: the paper's "Contact between spheres is modeled with a stiffness k and a
+  restitution coefficient e" names neither the pairs nor the damping nor the impact model; the graph
+  check compares all three (contactDamping, impactModel, one contact object per pair), and e acts
+  only with impact model 2. Ours: "between neighbouring spheres (0-1, 1-2, 2-3) ... no additional
+  damping, the impact model 2";
+- the creation order: the paper's "Add the spheres in the order of their index" goes on with the
+  distance constraints in the same order and then the contacts, as every task text states its order;
+- the simulated time: every task text ends with "Simulate the system for T s using N time steps"
+  (``TaskModel.instance``), because the code templates ask the model to use them.
+
 Physics check: with e close to 1, the momentum of sphere 0 is passed on to sphere 3.
 """
 

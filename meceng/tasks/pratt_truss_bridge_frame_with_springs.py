@@ -46,7 +46,9 @@ TASK = TaskModel(
         T_i-B_(i+1) for i = 1 to n/2 - 1 and T_i-B_(i-1) for i = n/2 + 1 to n - 1. Supports: B_0
         is pinned, i.e. its x- and y-coordinates are fixed to their reference values by two
         coordinate constraints to ground (coordinate indices 0 and 1), and B_n rests on a roller,
-        i.e. only its y-coordinate is fixed by a coordinate constraint (coordinate index 1). Gravity
+        i.e. only its y-coordinate is fixed by a coordinate constraint (coordinate index 1); each is
+        made with mbs.CreateCoordinateConstraint with itemNumbers=[None, mass point], so no ground
+        object is created. Gravity
         g = {gravity} m/s^2 acts in the negative y-direction on all mass points, and a constant force
         [0, -{force}, 0] N is applied to the bottom node B_1. Create the mass points B_0 to
         B_n, then T_1 to T_(n-1), then the members in the order given, then the support constraints

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import difflib
 import importlib
 import pkgutil
 from collections.abc import Iterable, Iterator
@@ -17,6 +18,26 @@ _PACKAGES = ("meceng.tasks", "meceng.tasks.parts", "meceng.tasks.assemblies")
 
 #: Any kind of task model: they share id, name, level, slug and ``instance(seed)``.
 AnyModel = TaskModel | PartModel | AssemblyModel
+
+
+class UnknownTaskError(KeyError, ValueError):
+    """Task keys (slugs or paper ids) that name no task model; the message names each one with the
+    slugs it is closest to. A ``KeyError`` for lookups, a ``ValueError`` for the settings that carry
+    the keys (``--only``, a sweep spec's ``only``), so both kinds of caller refuse it."""
+
+    def __init__(self, unknown: list[str], suggestions: dict[str, list[str]]) -> None:
+        super().__init__(unknown)
+        self.unknown = unknown
+        self.suggestions = suggestions
+
+    def __str__(self) -> str:
+        parts = []
+        for key in self.unknown:
+            close = self.suggestions.get(key) or []
+            hint = f" (did you mean {', '.join(close)}?)" if close else ""
+            parts.append(f"{key!r}{hint}")
+        noun = "task model" if len(parts) == 1 else "task models"
+        return (f"unknown {noun} {'; '.join(parts)}; `meceng tasks list` shows every slug and id")
 
 
 @dataclass(frozen=True)
@@ -42,10 +63,25 @@ class TaskRegistry:
         for model in self.models:
             if model.slug == key or model.id == key or str(model.id) == str(key):
                 return model
-        known = ", ".join(m.slug for m in self.models)
-        raise KeyError(f"unknown task model {key!r}; known: {known}")
+        raise self._unknown([str(key)])
+
+    def check(self, keys: Iterable[str | int]) -> None:
+        """Refuse keys that name no task model (one typo in ``--only`` must not shrink a run without a
+        word): raises ``UnknownTaskError`` naming every unknown key with its close matches."""
+        known = {m.slug for m in self.models} | {str(m.id) for m in self.models}
+        unknown = [str(k) for k in keys if str(k) not in known]
+        if unknown:
+            raise self._unknown(unknown)
+
+    def _unknown(self, keys: list[str]) -> UnknownTaskError:
+        slugs = [m.slug for m in self.models]
+        return UnknownTaskError(keys, {k: difflib.get_close_matches(k.lower(), slugs, n=3, cutoff=0.6) for k in keys})
 
     def select(self, levels: Iterable[str] | None = None, only: Iterable[str] | None = None) -> list[AnyModel]:
+        """The models of ``levels`` (all when None) among ``only`` (all when None); an unknown key in
+        ``only`` is an error, not an empty selection."""
+        if only:
+            self.check(only)
         wanted_levels = {str(lv) for lv in levels} if levels else None
         wanted = {str(x) for x in only} if only else None
         return [

@@ -39,7 +39,8 @@ TASK = TaskModel(
         q_i,d'(t) = q_ie*6*(s - s^2)/T with s = t/T for t < T, and q_i,d = q_ie, q_i,d' = 0 for
         t >= T, with q1e = {q1_end_deg} degrees, q2e = {q2_end_deg} degrees, q3e = {q3_end_deg}
         degrees (converted to radians) and the motion time T = {duration} s. Each joint is driven by
-        PD control through a torsional spring-damper between the same two items at the same position
+        PD control through a torsional spring-damper between the same two items, in the same order
+        (the item named first, e.g. the ground for joint 1, is itemNumbers[0]), at the same position
         and axis as its revolute joint, with stiffness kP = {kp} N*m/rad and damping
         kD = {kd} N*m*s/rad, whose springTorqueUserFunction returns
         kP*(rotation - q_i,d(t)) + kD*(angularVelocity - q_i,d'(t)), rotation and angularVelocity

@@ -21,7 +21,7 @@ TASK = TaskModel(
     name="sphere-sphere impact",
     level="2",
     description="""
-        Two spheres collide in free space; gravity is neglected. Both spheres are modeled as mass
+        Two spheres collide in free space; gravity is neglected and there is no ground object. Both spheres are modeled as mass
         points (no rotation, no friction). Sphere 0 has mass m0 = {mass0} kg and radius
         r0 = {radius0} m; it starts at [0, 0, 0] with the initial velocity [{velocity}, 0, 0] m/s.
         Sphere 1 has mass m1 = {mass1} kg and radius r1 = {radius1} m; it starts at rest at

@@ -46,6 +46,8 @@ class ExecutionLimits:
     mode: str = "rigid"  # "part": a level 3a program, captured by the part runner
     n_modes: int = 6
     save_fem_to: str | None = None  # part mode: keep the program's reduced FEMinterface here (.npz)
+    # the model inspector: body and marker states at t = 0 and at these times (None: not recorded)
+    inspect_times: tuple[float, ...] | None = None
 
 
 @dataclass(frozen=True)
@@ -76,6 +78,7 @@ class Execution:
     returncode: int | None = None
     wall_time: float = 0.0
     solve_time: float | None = None
+    inspection: dict[str, Any] | None = None  # the model inspector's states (ExecutionLimits.inspect_times)
 
     @property
     def finished_assemble(self) -> bool:
@@ -227,7 +230,8 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
     job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token, "check": check,
                                "guard": limits.guard, "isolate_network": limits.isolate_network,
                                "mode": limits.mode, "n_modes": limits.n_modes,
-                               "save_fem": limits.save_fem_to is not None}))
+                               "save_fem": limits.save_fem_to is not None,
+                               "inspect_times": None if limits.inspect_times is None else list(limits.inspect_times)}))
     (scratch / "program.py").write_text(program)
     return job, token
 
@@ -329,5 +333,6 @@ def _collect(
         trajectory=trajectory,
         warnings=tuple(result.get("warnings", ())),
         solve_time=result.get("solve_time"),
+        inspection=result.get("inspection"),
         **common,
     )

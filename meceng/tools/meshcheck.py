@@ -11,7 +11,7 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
-from meceng.tools.syntax import parse
+from meceng.syntax import parse
 
 
 @dataclass(frozen=True)

@@ -60,7 +60,7 @@ def run_part(job: dict[str, Any], workdir: Path) -> int:
             warnings.append(f"interfaces without faces on the mesh: {missing}")
         state.update(fem=fem, material=(float(youngsModulus), float(poissonsRatio), float(density)),
                      interfaces=tuple(n for n in names if n not in missing), stage="meshed")
-        state["geometry"] = _mesh_geometry(mesh, state["interfaces"])
+        state["geometry"] = _mesh_geometry(mesh, state["interfaces"], state.get("geometry_source"))
         stage_log.write("meshed\n")
         return out
 
@@ -150,19 +150,29 @@ def _boundary_names(mesh: Any) -> set[str] | None:
         return None
 
 
-def _mesh_geometry(mesh: Any, names: tuple[str, ...]) -> dict[str, Any]:
-    """Volume of the mesh, and area and centre of every named interface (for the agent's tool)."""
+def _mesh_geometry(mesh: Any, names: tuple[str, ...], source: tuple[Any, Any] | None = None) -> dict[str, Any]:
+    """Volume of the mesh and, for every named interface, its area, centre, mean outward normal,
+    number of geometry faces and of surface triangles (for the agent's ``mesh_part`` tool)."""
     try:
         import ngsolve as ngs
 
         one = ngs.CoefficientFunction(1.0)
+        normal = ngs.specialcf.normal(3)
+        shape = getattr(source[0], "shape", None) if source else None
+        triangles: dict[str, int] = {}
+        for element in mesh.Elements(ngs.BND):
+            triangles[element.mat] = triangles.get(element.mat, 0) + 1
         interfaces = {}
         for name in names:
             region = mesh.Boundaries(str(name))
             area = float(ngs.Integrate(one, mesh, ngs.BND, definedon=region))
             centre = ([float(ngs.Integrate(c, mesh, ngs.BND, definedon=region)) / area for c in (ngs.x, ngs.y, ngs.z)]
                       if area > 0 else None)
-            interfaces[str(name)] = {"area": area, "centre": centre}
+            mean_normal = ([float(ngs.Integrate(normal[k], mesh, ngs.BND, definedon=region)) / area
+                            for k in range(3)] if area > 0 else None)
+            faces = sum(1 for face in shape.faces if face.name == name) if shape is not None else None
+            interfaces[str(name)] = {"area": area, "centre": centre, "mean_normal": mean_normal,
+                                     "geometry_faces": faces, "surface_triangles": triangles.get(str(name), 0)}
         return {"volume": float(ngs.Integrate(one, mesh)), "interfaces": interfaces}
     except Exception as exc:  # not an ngsolve mesh: the metrics do not need this
         return {"error": f"{type(exc).__name__}: {exc}"}

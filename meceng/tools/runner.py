@@ -47,6 +47,7 @@ class Harness:
         self.user_post_step: dict[int, Any] = {}
         self.warnings: list[str] = []
         self.rows: list[tuple[float, Any]] = []
+        self.inspector: Any = None  # an InspectionRecorder when the job asks for the model inspector
         self.mark("started")
 
     def mark(self, stage: str) -> None:
@@ -90,7 +91,10 @@ class Harness:
             "NumberOfSensors")}
         self.api.update({name: getattr(main_system, name) for name in (
             "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter",
-            "ComputeSystemDegreeOfFreedom")})
+            "ComputeSystemDegreeOfFreedom", "GetObjectOutputBody", "GetNodeOutput", "GetMarkerOutput",
+            "GetNodeODE2Index")})
+        # the inspector's enums, before the program could replace them with objects of its own
+        self.api.update(OutputVariableType=exu.OutputVariableType, ConfigurationType=exu.ConfigurationType)
         main_system.Assemble = assemble
         main_system.SetPostStepUserFunction = set_post_step
         import exudyn.solver as solver
@@ -128,8 +132,12 @@ class Harness:
         user_post = self.user_post_step.get(id(mbs))
         get_total = self.api["GetODE2CoordinatesTotal"]
 
+        inspector = self.inspector
+
         def record(system: Any, t: float) -> bool:
             self.rows.append((t, np.array(get_total(system.systemData))))
+            if inspector is not None:
+                inspector.after_step(t)
             if user_post is not None:
                 return bool(user_post(system, t))
             return True
@@ -264,6 +272,8 @@ def run(job_path: Path) -> int:
     result["items"] = capture_items(harness.mbs, harness.api)
     result["system"] = system_summary(harness.mbs, harness.api)
     result["program_time"] = time.perf_counter() - t_start
+    if job.get("inspect_times") is not None:
+        harness.inspector = start_inspection(harness, job["inspect_times"], result)
     t_solve = time.perf_counter()
     try:
         harness.guard(True)  # the program's user functions run inside the solver
@@ -273,9 +283,27 @@ def run(job_path: Path) -> int:
     finally:
         harness.guard(False)
     result["solve_time"] = time.perf_counter() - t_solve
+    if harness.inspector is not None:
+        result["inspection"] = harness.inspector.result()
     result["stage"] = harness.stage
     _write_result(workdir, result, harness)
     return 0
+
+
+def start_inspection(harness: Harness, times: list[float], result: dict[str, Any]) -> Any:
+    """The inspector's recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
+    from meceng.tools.inspection import InspectionRecorder
+
+    try:
+        harness.guard(True)  # the system is the program's: read it under the same guard
+        recorder = InspectionRecorder(harness.mbs, harness.api, list(times))
+        recorder.take(0.0, initial=True)
+        return recorder
+    except Exception as exc:
+        result.setdefault("warnings", []).append(f"model inspector unavailable: {exc}")
+        return None
+    finally:
+        harness.guard(False)
 
 
 def _refused(job: dict[str, Any], workdir: Path) -> bool:

@@ -32,7 +32,7 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
-from meceng.tools.syntax import parse
+from meceng.syntax import parse
 
 ALLOWED_IMPORT_ROOTS = frozenset(
     {

@@ -15,13 +15,14 @@ from collections import defaultdict
 from typing import Any
 
 from meceng.eval.parts import PartTolerances
+from meceng.tasks.drafts import without_header
 from meceng.viewer.diff import side_by_side
 
 #: record fields a section below shows; anything else lands in "Other fields"
 SHOWN = {"id", "slug", "name", "level", "seed", "params", "description", "required_components", "origin", "stages",
          "overall", "first_failure", "error_categories", "differences", "solution_norm", "infrastructure_error",
          "selection", "generation", "execution", "reference_execution", "timing", "tokens", "files", "evaluator",
-         "part", "parts", "agent", "traceback", "topology_causes"}
+         "part", "parts", "agent", "traceback", "topology_causes", "repair"}
 
 
 def esc(value: Any) -> str:
@@ -167,10 +168,26 @@ def _chat(agent: dict[str, Any]) -> str:
     return "".join(out)
 
 
+def _repair(block: dict[str, Any], reference: str | None) -> str:
+    """The seeded fault: its label, what it changed, the grader's verdict on the draft, and the draft
+    beside the reference (the answer beside the reference follows under Programs)."""
+    graded = block.get("graded") or {}
+    facts = _kv([("fault", esc(block.get("fault"))), ("label", esc(block.get("label"))),
+                 ("grader on the draft", esc(f"{graded.get('first_failure')} "
+                                             f"({', '.join(graded.get('categories') or []) or 'no category'})")),
+                 ("label = grader", esc(graded.get("agrees"))), ("tools", esc("on" if block.get("tools") else "off")),
+                 ("repaired", esc(block.get("repaired")))])
+    if reference is None or not block.get("program"):
+        return facts
+    table, changed = side_by_side(block["program"], without_header(reference)[0])
+    return facts + _details(f"the draft beside the reference ({changed} changed line(s))",
+                            f"<div class='diffwrap'>{table}</div>")
+
+
 def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str | None,
               reference: str | None, file_links: dict[str, str], images: dict[str, str],
-              neighbours: tuple[str | None, str | None]) -> str:
-    """The whole page as one string (the caller writes it)."""
+              neighbours: tuple[str | None, str | None], system: str | None = None) -> str:
+    """The whole page as one string (the caller writes it); ``system`` is the pictures' HTML."""
     key = f"{record.get('origin') + '/' if record.get('origin') else ''}{record['slug']}@{record['seed']}"
     verdict = ("infrastructure failure (not counted)" if record.get("first_failure") == "infrastructure"
                else "passed" if record.get("overall") else f"failed at {record.get('first_failure')}")
@@ -195,6 +212,8 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
           "<h2 id='stages'>Stages</h2>", _stages(record)]
     if record.get("differences") or record.get("topology_causes"):
         s += ["<h2 id='differences'>Graph differences by error category</h2>", _differences(record)]
+    if system is not None:
+        s += ["<h2 id='system'>System: program vs ground truth</h2>", system]
     if "trajectory" in images:
         s += ["<h2 id='solution'>Numerical solution: program vs ground truth</h2>",
               "<p class='muted'>the coordinates that differ most; the full trajectories were resampled to ≤ 200 "
@@ -206,6 +225,8 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
         s.append(_details("part record", _json(record.get("part"))))
     if record.get("parts"):
         s.append(_details("parts of this assembly", _json(record["parts"]), open_=True))
+    if record.get("repair"):
+        s += ["<h2 id='repair'>Repair: the draft</h2>", _repair(record["repair"], reference)]
     s.append("<h2 id='programs'>Programs</h2>")
     links = " · ".join(f"<a href='{esc(href)}'>{esc(name)}</a>" for name, href in file_links.items())
     if links:

@@ -17,8 +17,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import MaxNLocator
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
+from meceng.agents.inspect.snapshot import shaded_surface
 from meceng.eval.solution import resample
 from meceng.pipeline.traces import ranked_coordinates
 
@@ -93,15 +93,6 @@ def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COO
     return True
 
 
-def _shaded(vertices: np.ndarray, triangles: np.ndarray, colour: tuple[float, float, float]) -> Poly3DCollection:
-    faces = vertices[triangles]
-    normals = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])
-    normals /= np.linalg.norm(normals, axis=1, keepdims=True) + 1e-30
-    light = np.abs(normals @ np.array([0.3, -0.5, 0.8]) / np.linalg.norm([0.3, -0.5, 0.8]))
-    shade = (0.35 + 0.65 * light)[:, None] * np.array(colour)[None, :]
-    return Poly3DCollection(faces, facecolors=np.clip(shade, 0, 1), edgecolors=(0, 0, 0, 0.15), linewidths=0.2)
-
-
 def part_plot(traces: dict[str, Any], path: Path) -> bool:
     """The program's part (top row) and the ground-truth part (bottom row) from the same views,
     on the same axes limits, so a wrong size or a missing hole shows. False without surfaces."""
@@ -123,7 +114,7 @@ def part_plot(traces: dict[str, Any], path: Path) -> bool:
             if vertices is None or triangles is None or not len(triangles):
                 ax.set_title(f"{label}: no surface", fontsize=9)
                 continue
-            ax.add_collection3d(_shaded(np.asarray(vertices, float), np.asarray(triangles), colour))
+            ax.add_collection3d(shaded_surface(np.asarray(vertices, float), np.asarray(triangles), colour))
             for k, axis in enumerate("xyz"):  # the same limits in every panel: sizes compare
                 getattr(ax, f"set_{axis}lim")(low[k] - margin[k], high[k] + margin[k])
             ax.set_box_aspect(tuple(extent + 2 * margin))

@@ -77,6 +77,7 @@ def write_page(run_index: int, position: int, out: Path) -> int:
     """Write one record's page and its plots; returns the number of plots drawn."""
     from meceng.pipeline.rundir import record_key
     from meceng.viewer.plots import part_plot, trajectory_plot
+    from meceng.viewer.systems import system_pictures
 
     run = _RUNS[run_index]
     record = run.tasks[position]
@@ -99,13 +100,19 @@ def write_page(run_index: int, position: int, out: Path) -> int:
             if traces is not None and draw(traces, png):
                 images[kind] = png.name
                 plots += 1
+    system = None
+    if source.exists() and str(record.get("level")) != "3a":  # every rigid and assembly record: SVG is cheap
+        traces = load_traces(run.path, record_key(record))
+        if traces is not None and "scenes" in traces:
+            system = system_pictures(traces["scenes"])
     program, reference = _programs(run, record)
     links = {name: os.path.relpath(_resolved(run.path) / rel, _resolved(folder))
              for name, rel in (record.get("files") or {}).items()}
     neighbours = tuple(Path(page_path(run_index, run.tasks[p])).name if 0 <= p < len(run.tasks) else None
                        for p in (position - 1, position + 1))
     html = task_page(record, run_label=_LABELS[run_index], root="../../", program=program, reference=reference,
-                     file_links=links, images=images, neighbours=neighbours)  # type: ignore[arg-type]
+                     file_links=links, images=images, neighbours=neighbours,  # type: ignore[arg-type]
+                     system=system)
     target.write_text(html, encoding="utf-8")
     return plots
 

@@ -20,8 +20,9 @@ TASK = AssemblyModel(
     description="""
 A cantilever beam: the flexible beam part 'beam' (length beam_length = {beam_length} m) lies with its own
 frame equal to the global frame, i.e. its left end face centre at the origin and its axis along the
-global x-axis. Its left end face (interface 'left') is clamped to the ground at the point [0, 0, 0]
-(all translations and rotations locked). Gravity g = {g} m/s^2 acts on the beam in negative global
+global x-axis. Its left end face (interface 'left') is clamped to the ground: an InterfaceJoint (Exudyn's GenericJoint
+object, all translations and rotations locked) between a ground marker at [0, 0, 0] (first in markerNumbers)
+and the beam's 'left'. Gravity g = {g} m/s^2 acts on the beam in negative global
 z-direction, and a force of magnitude tip_force = {tip_force} N acts at the right end face (interface
 'right') in negative global z-direction. The beam starts at rest in its undeformed reference position.
 """,

@@ -69,7 +69,8 @@ with the global frame (the global z-axis points up) and the gap-side leaf's knuc
 centres of the pin-side leaf's 'pin' and of the gap-side leaf's 'bore' both lie on the hinge axis at
 [0, 0, mid_z] = [0, 0, {mid_z}] (mid_z = 1.5 knuckle_length); the centre of the pin-side leaf's 'mount'
 (its two screw holes) is [mount_x, 0, mid_z] = [{mount_x}, 0, {mid_z}].
-Joints (GenericJoint, constrained axes in global coordinates, the first-named marker first in markerNumbers):
+Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers,
+constrained axes in global coordinates, the first-named marker first in markerNumbers):
 (1) a clamp (all translations and rotations locked, constrainedAxes = [1, 1, 1, 1, 1, 1]) between a ground
 marker at [{mount_x}, 0, {mid_z}] and the pin-side leaf's 'mount'; (2) a revolute joint about the global
 z-axis (constrainedAxes = [1, 1, 1, 1, 1, 0]) between the pin-side leaf's 'pin' and the gap-side leaf's 'bore'.

@@ -48,7 +48,8 @@ along its x-axis) with reference position [0, 0, 0] and reference rotation matri
 where theta0 = {theta0_deg} degrees (convert it to radians) is the initial angle between the beam axis and
 the downward vertical: the beam axis then points along [sin(theta0), 0, -cos(theta0)], the right end face
 on the +x side of the hinge, below it. The left end face (interface 'left') is connected to the ground by
-a revolute joint about the global y-axis (GenericJoint with constrainedAxes = [1, 1, 1, 1, 0, 1]) between a
+a revolute joint about the global y-axis (an InterfaceJoint: Exudyn's GenericJoint object with
+constrainedAxes = [1, 1, 1, 1, 0, 1]) between a
 ground marker at [0, 0, 0] (first in markerNumbers) and the beam's 'left'. Gravity g = {g} m/s^2 acts on the
 beam in negative global z-direction. The beam is released from rest in its undeformed reference position.
 Create the beam, then the ground and its marker, then the joint.

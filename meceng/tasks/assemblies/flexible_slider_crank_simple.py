@@ -76,7 +76,8 @@ g = {g} m/s^2 acts on all three parts in negative global y-direction.
 """
 
 JOINTS_TEXT = """
-Joints (GenericJoint, constrained axes in global coordinates), each acting at the interfaces named, with
+Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers, constrained axes in
+global coordinates), each acting at the interfaces named, with
 the first-named marker first in markerNumbers: (1) a revolute joint about the global z-axis between a
 ground marker at [0, 0, 0] and the crank's 'hole_a'; (2) a revolute joint about the global z-axis between
 the crank's 'hole_b' and the rod's 'hole_a'; (3) a pin joint between the rod's 'hole_b' and the slider's

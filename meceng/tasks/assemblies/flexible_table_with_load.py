@@ -65,8 +65,7 @@ rotation and reference position [0, 0, lift] with lift = plate_thickness/2 + leg
 the feet stand on the floor at z = 0. The foot centres are then at [-foot_x, -foot_y, 0] ('foot1'),
 [foot_x, -foot_y, 0] ('foot2'), [foot_x, foot_y, 0] ('foot3') and [-foot_x, foot_y, 0] ('foot4') with
 foot_x = table_length/2 - leg_inset - leg_size/2 = {foot_x} m and foot_y = table_width/2 - leg_inset -
-leg_size/2 = {foot_y} m. Each foot is clamped to the ground (GenericJoint, all translations and rotations
-locked, constrainedAxes = [1, 1, 1, 1, 1, 1]) between a ground marker at its foot centre (first in
+leg_size/2 = {foot_y} m. Each foot is clamped to the ground (an InterfaceJoint: Exudyn's GenericJoint object, all translations and rotations locked, constrainedAxes = [1, 1, 1, 1, 1, 1]) between a ground marker at its foot centre (first in
 markerNumbers) and the foot's interface. Gravity g = {g} m/s^2 acts on the table in negative global
 z-direction. A constant force of load_force = {load_force} N acts in negative global z-direction (load
 vector [0, 0, -load_force]) on the load pad's top face (interface 'load', centre at [0, 0, {load_z}]). The

@@ -73,9 +73,10 @@ lies on the housing's spindle axis and its journals sit in the housing's bearing
 [-{seat_x}, 0, {axis_height}], and the right journal ('bearing_right') in the right bore ('bearing_right'),
 both centred at [{seat_x}, 0, {axis_height}], with seat_x = (housing_length - bearing_length)/2 = {seat_x} m
 (housing_length = {housing_length} m, bearing_length = {bearing_length} m).
-Joints (GenericJoint, constrained axes in global coordinates, the first-named marker first in markerNumbers):
-(1) the housing's feet (interface 'feet') are clamped to the ground (all translations and rotations locked)
-with a ground marker at [0, 0, 0]; (2) the locating bearing: a revolute joint about the global x-axis
+Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers,
+constrained axes in global coordinates, the first-named marker first in markerNumbers):
+(1) a clamp (all translations and rotations locked) between a ground marker at [0, 0, 0] and the
+housing's feet (interface 'feet'); (2) the locating bearing: a revolute joint about the global x-axis
 (constrainedAxes = [1, 1, 1, 0, 1, 1]) between the housing's 'bearing_left' and the spindle's
 'bearing_left'; (3) the floating bearing: a joint between the housing's 'bearing_right' and the spindle's
 'bearing_right' that locks only the translations along the global y- and z-axes

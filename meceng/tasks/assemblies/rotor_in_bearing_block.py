@@ -60,10 +60,10 @@ rotation, so its bottom lies on the plane z = 0 and its bore axis is the line y 
 (rotor_x = -bearing_width/2, bearing_width = {bearing_width} m) and the identity rotation, so that its axis
 lies on the bore axis, its left seat (interface 'left') sits in the block's bore with the seat's centre at
 the bore's centre [0, 0, {axis_height}], its right seat (interface 'right') has its centre at [bearing_span,
-0, axis_height] = [{bearing_span}, 0, {axis_height}] and its unbalance hole is on the +z side. Joints
-(GenericJoint, constrained axes in global coordinates, the first-named marker first in markerNumbers):
-(1) the block's bottom (interface 'bottom') is clamped to the ground (all translations and rotations locked)
-with a ground marker at [0, 0, 0]; (2) the locating bearing: a revolute joint about the global x-axis
+0, axis_height] = [{bearing_span}, 0, {axis_height}] and its unbalance hole is on the +z side. Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers,
+constrained axes in global coordinates, the first-named marker first in markerNumbers):
+(1) a clamp (all translations and rotations locked) between a ground marker at [0, 0, 0] and the block's
+bottom (interface 'bottom'); (2) the locating bearing: a revolute joint about the global x-axis
 (constrainedAxes = [1, 1, 1, 0, 1, 1]) between the block's 'bore' and the rotor's 'left'; (3) the rigid
 floating bearing: a joint between a ground marker at the right seat's centre [{bearing_span}, 0,
 {axis_height}] and the rotor's 'right' that locks only the translations along the global y- and z-axes

@@ -62,10 +62,10 @@ with the rotor's drive end length end_length = {end_length} m and bearing_width 
 identity rotation, so that its axis lies on the bore axes, its left seat (interface 'left') sits in block1's
 bore with the seat's centre at the bore's centre [0, 0, {axis_height}], its right seat (interface 'right')
 sits in block2's bore with the seat's centre at [{bearing_span}, 0, {axis_height}], and its keyway is on the
-+z side. Joints (GenericJoint, constrained axes in global coordinates, the first-named marker first in
-markerNumbers): (1) block1's bottom (interface 'bottom') is clamped to the ground (all translations and
-rotations locked) with a ground marker at [0, 0, 0]; (2) block2's 'bottom' is clamped to the ground with a
-ground marker at [{bearing_span}, 0, 0]; (3) the locating bearing: a revolute joint about the global x-axis
++z side. Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers,
+constrained axes in global coordinates, the first-named marker first in markerNumbers): (1) a clamp (all translations and rotations locked) between a ground marker at [0, 0, 0] and
+block1's bottom (interface 'bottom'); (2) a clamp between a ground marker at [{bearing_span}, 0, 0] and
+block2's 'bottom'; (3) the locating bearing: a revolute joint about the global x-axis
 (constrainedAxes = [1, 1, 1, 0, 1, 1]) between block1's 'bore' and the rotor's 'left'; (4) the floating
 bearing: a joint between block2's 'bore' and the rotor's 'right' that locks only the translations along the
 global y- and z-axes (constrainedAxes = [0, 1, 1, 0, 0, 0]; the right seat may shift along the axis and

@@ -63,9 +63,10 @@ z = hub_height = {hub_height} m, parallel to the global x-axis; the rotor with r
 {nacelle_length} m) and the identity rotation, so that its axis lies on the bore axis, its shaft (interface
 'shaft') fills the bore with the shaft's centre at the bore's centre [0, 0, {hub_height}], and its hub sits
 in front of the nacelle's front face on the +x side, with blade 1 pointing up (+z).
-Joints (GenericJoint, constrained axes in global coordinates, the first-named marker first in markerNumbers):
-(1) the tower's base plate bottom (interface 'ground') is clamped to the ground (all translations and
-rotations locked) with a ground marker at [0, 0, 0]; (2) a revolute joint about the global x-axis, the rotor
+Joints (each an InterfaceJoint: Exudyn's GenericJoint object between two markers,
+constrained axes in global coordinates, the first-named marker first in markerNumbers):
+(1) a clamp (all translations and rotations locked) between a ground marker at [0, 0, 0] and the tower's
+base plate bottom (interface 'ground'); (2) a revolute joint about the global x-axis, the rotor
 axis (constrainedAxes = [1, 1, 1, 0, 1, 1]), between the tower's 'bore' and the rotor's 'shaft'.
 Gravity g = {g} m/s^2 acts on both parts in negative global z-direction. The rotor starts with the initial
 angular velocity [omega0, 0, 0] with omega0 = {omega0} rad/s (zero initial velocity of its reference point,

@@ -1,4 +1,5 @@
-"""``ast.parse`` behind one lock, for every parse the harness makes in the parent process.
+"""``ast.parse`` behind one lock, for every parse the harness makes in the parent process (the
+static check, the code extraction, the mesh pre-check, the repair drafts: every room may use it).
 
 CPython 3.11 keeps the AST constructor's recursion depth in interpreter-wide state: two threads
 parsing at once (the static check runs off the event loop, the code extraction on it) can break

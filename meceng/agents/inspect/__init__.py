@@ -1,0 +1,6 @@
+"""The agent's eyes: what a program built, as text (the model inspector) and as a picture (snapshot).
+
+``view`` reads one execution of the program into a system view (bodies, connectors, loads, states);
+``answer`` writes it as the inspector's text; ``snapshot`` draws it. Nothing here ever sees a
+ground truth: a view is made from the program's own execution only.
+"""

@@ -1,0 +1,201 @@
+"""A system view at one time as drawable 3D shapes, and the projections every picture uses.
+
+One scene, two renderers: the agent's snapshot (a PNG drawn with matplotlib) and the viewer's
+task pages (inline SVG, milliseconds per record). Both project the same shapes with the same
+views, so what a model saw and what a reader sees are the same picture.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from meceng.agents.inspect.view import Body, BodyState, SystemView
+
+Point = tuple[float, float, float]
+
+#: role -> colour, shared by the renderers
+COLOURS = {"body": "#4a7fc1", "ground": "#666666", "joint": "#d62728", "spring": "#2ca02c",
+           "distance": "#9467bd", "contact": "#ff7f0e", "load": "#8c564b"}
+LEGEND = ("blue: bodies (rigid bodies as inertia-equivalent boxes, mass points as dots); grey square: ground; "
+          "red: joints and their axes; green: springs; purple: distance constraints; orange: contacts; "
+          "brown arrows: forces")
+
+_ROLES = {"SpringDamper": "spring", "CartesianSpringDamper": "spring", "TorsionalSpringDamper": "spring",
+          "RigidBodySpringDamper": "spring", "CoordinateSpringDamper": "spring", "DistanceConstraint": "distance",
+          "SphereSphereContact": "contact", "SphereTriangleContact": "contact"}
+JOINTS = frozenset({"RevoluteJoint", "PrismaticJoint", "SphericalJoint", "GenericJoint", "RollingDisc"})
+
+
+@dataclass(frozen=True)
+class Shape:
+    """``box`` (8 corners), ``line`` (2 points), ``point``, ``circle`` (centre, radius), ``arrow``
+    (tail, head) or ``label`` (anchor, text)."""
+
+    kind: str
+    role: str
+    points: tuple[Point, ...]
+    radius: float = 0.0
+    text: str = ""
+
+    def to_json(self) -> list[Any]:
+        return [self.kind, self.role, [[round(c, 6) for c in p] for p in self.points], round(self.radius, 6),
+                self.text]
+
+    @classmethod
+    def from_json(cls, data: list[Any]) -> Shape:
+        kind, role, points, radius, text = data
+        return cls(kind, role, tuple((float(p[0]), float(p[1]), float(p[2])) for p in points), float(radius), text)
+
+
+@dataclass(frozen=True)
+class Projection:
+    """An orthographic view: screen x and y as two unit vectors of the global frame."""
+
+    name: str
+    right: Point
+    up: Point
+
+    def apply(self, points: np.ndarray) -> np.ndarray:
+        return np.asarray(points, dtype=float).reshape(-1, 3) @ np.array([self.right, self.up]).T
+
+
+def _iso() -> Projection:
+    azimuth, elevation = math.radians(-60.0), math.radians(30.0)
+    right = (-math.sin(azimuth), math.cos(azimuth), 0.0)
+    up = (-math.sin(elevation) * math.cos(azimuth), -math.sin(elevation) * math.sin(azimuth), math.cos(elevation))
+    return Projection("isometric", right, up)
+
+
+#: three orthogonal views and an isometric one
+VIEWS = (Projection("top: x right, y up (looking down z)", (1, 0, 0), (0, 1, 0)),
+         Projection("front: x right, z up (looking along +y)", (1, 0, 0), (0, 0, 1)),
+         Projection("side: y right, z up (looking along -x)", (0, 1, 0), (0, 0, 1)),
+         _iso())
+
+
+def box_half_sizes(body: Body) -> np.ndarray | None:
+    """Half edge lengths of the homogeneous box with the body's mass and principal moments."""
+    if body.principal_inertia is None or body.mass is None or body.mass <= 0 or len(body.principal_inertia) != 3:
+        return None
+    i1, i2, i3 = body.principal_inertia
+    squares = 6.0 / body.mass * np.array([i2 + i3 - i1, i1 + i3 - i2, i1 + i2 - i3])
+    return 0.5 * np.sqrt(np.clip(squares, 0.0, None))
+
+
+def box_corners(body: Body, state: BodyState) -> np.ndarray | None:
+    """The 8 corners of the inertia-equivalent box in global coordinates, or None (no orientation)."""
+    half = box_half_sizes(body)
+    if half is None or state.rotation is None or body.principal_axes is None:
+        return None
+    signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
+    local = (signs * half) @ body.principal_axes.T
+    return np.asarray(state.position) + local @ state.rotation.T
+
+
+def sample_index(view: SystemView, t: float) -> int:
+    return int(np.argmin([abs(s - t) for s in view.times])) if view.times else 0
+
+
+def _p(values: Any) -> Point:
+    return (float(values[0]), float(values[1]), float(values[2]))
+
+
+def extent(view: SystemView) -> float:
+    """The size of the system: arrows and joint axes are drawn in proportion to it. The initial
+    configuration counts, and a tenth of how far it travels (a rolling vehicle stays readable)."""
+    def spread(k: int | None) -> float:
+        points = [s.position[:3] for b in view.bodies for s in b.states
+                  if len(s.position) >= 3 and (k is None or abs(s.t - view.times[k]) < 1e-12)]
+        markers = view.marker_states if k is None else view.marker_states[k:k + 1]
+        points += [p[:3] for m in markers for p in m.values() if len(p) >= 3]
+        return float(np.ptp(np.asarray(points, dtype=float), axis=0).max()) if points else 0.0
+
+    first = spread(0) if view.times else 0.0
+    return max(first, 0.1 * spread(None), 1e-3)
+
+
+def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
+    """Everything the picture at time ``t`` (the nearest sampled state) shows."""
+    k = sample_index(view, t)
+    at = view.times[k] if view.times else 0.0
+    size = extent(view)
+    markers = view.marker_states[k] if k < len(view.marker_states) else {}
+    shapes: list[Shape] = []
+    for c in view.connectors:
+        points = [_p(markers[m]) for m in c.markers if m in markers and len(markers[m]) >= 3]
+        if c.kind in JOINTS and points:
+            shapes.append(Shape("point", "joint", (points[0],)))
+            if c.axis is not None and k == 0:
+                a = np.asarray(c.axis[:3]) * 0.12 * size
+                shapes.append(Shape("line", "joint", (_p(points[0] - a), _p(points[0] + a))))
+        elif len(points) == 2:
+            role = _ROLES.get(c.kind, "spring")
+            if role != "contact" and not np.allclose(points[0], points[1]):  # a contact is no link
+                shapes.append(Shape("line", role, (points[0], points[1])))
+            if role == "contact":
+                for point, radius in zip(points, c.parameters.get("spheresRadii") or [], strict=False):
+                    shapes.append(Shape("circle", role, (point,), float(radius)))
+    for body in view.bodies:
+        state = body.state_at(at)
+        if state is None or len(state.position) < 3:
+            continue
+        position = _p(state.position)
+        corners = box_corners(body, state)
+        if body.is_ground:
+            shapes.append(Shape("point", "ground", (position,)))
+        elif corners is not None:
+            shapes.append(Shape("box", "body", tuple(_p(c) for c in corners)))
+        else:
+            shapes.append(Shape("point", "body", (position,)))
+        shapes.append(Shape("label", "body", (position,), text=f"#{body.index}"))
+    for load in view.loads:
+        body = view.body(load.body) if load.body is not None else None
+        state = body.state_at(at) if body is not None else None
+        if load.vector is None or len(load.vector) < 3 or state is None or "Gravity" in load.kind:
+            continue
+        norm = float(np.linalg.norm(load.vector[:3])) or 1.0
+        tail = np.asarray(state.position[:3])
+        shapes.append(Shape("arrow", "load", (_p(tail), _p(tail + np.asarray(load.vector[:3]) / norm * 0.15 * size))))
+    return tuple(shapes)
+
+
+def bounds(scenes: list[tuple[Shape, ...]], projection: Projection) -> tuple[np.ndarray, np.ndarray]:
+    """Screen-space bounds of several scenes in one view (so two pictures share their scale)."""
+    chunks = []
+    for scene in scenes:
+        for shape in scene:
+            xy = projection.apply(np.asarray(shape.points))
+            chunks.append(xy - shape.radius)
+            chunks.append(xy + shape.radius)
+    if not chunks:
+        return np.array([-1.0, -1.0]), np.array([1.0, 1.0])
+    every = np.vstack(chunks)
+    low, high = every.min(axis=0), every.max(axis=0)
+    pad = max(float((high - low).max()) * 0.08, 1e-3)
+    return low - pad, high + pad
+
+
+def hull(points: np.ndarray) -> np.ndarray:
+    """Convex hull of 2D points (monotone chain): the outline of a projected box."""
+    pts = sorted({(round(float(x), 12), round(float(y), 12)) for x, y in points})
+    if len(pts) < 3:
+        return np.asarray(pts)
+
+    def cross(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower: list[tuple[float, float]] = []
+    upper: list[tuple[float, float]] = []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return np.asarray(lower[:-1] + upper[:-1])

@@ -1,0 +1,204 @@
+"""A picture of what a program built: its system at t = 0 and at a later time, or its part.
+
+Drawn headless with matplotlib (Agg) from the scene of a system view (``scene.py``): rigid bodies
+as inertia-equivalent boxes (the box with the body's mass and principal moments, turned with the
+body), mass points as dots, the ground as a grey square, joints at their points with their axes,
+springs and distance constraints as lines, contact spheres as circles, loads as arrows. Three
+orthogonal views and an isometric one per row, axes labelled in metres. Text-only models get
+``describe`` instead.
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Sequence
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.patches import Circle, Polygon
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from meceng.agents.inspect.answer import num, vec
+from meceng.agents.inspect.scene import (
+    COLOURS,
+    JOINTS,
+    LEGEND,
+    VIEWS,
+    Projection,
+    Shape,
+    bounds,
+    box_half_sizes,
+    build_scene,
+    hull,
+    sample_index,
+)
+from meceng.agents.inspect.view import SystemView, direction
+
+_AXIS_NAMES = "xyz"
+
+
+def _axis_label(vector: tuple[float, ...]) -> str:
+    k = int(np.argmax(np.abs(vector)))
+    return f"{'-' if vector[k] < 0 else ''}{_AXIS_NAMES[k]} [m]" if abs(vector[k]) > 0.999 else ""
+
+
+def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection) -> None:
+    """One scene in one view on 2D matplotlib axes."""
+    for shape in shapes:
+        xy = projection.apply(np.asarray(shape.points))
+        colour = COLOURS[shape.role]
+        if shape.kind == "box":
+            ax.add_patch(Polygon(hull(xy), closed=True, alpha=0.35, facecolor=colour, edgecolor=colour, lw=0.6))
+        elif shape.kind == "line":
+            ax.plot(xy[:, 0], xy[:, 1], "--" if shape.role == "distance" else "-", color=colour,
+                    lw=1.5 if shape.role == "joint" else 1.0)
+        elif shape.kind == "point":
+            style = {"ground": ("s", 8), "joint": ("o", 5)}.get(shape.role, ("o", 6))
+            ax.plot(xy[0, 0], xy[0, 1], style[0], color=colour, ms=style[1],
+                    mfc="none" if shape.role == "joint" else colour)
+        elif shape.kind == "circle":
+            ax.add_patch(Circle((xy[0, 0], xy[0, 1]), shape.radius, fill=False, color=colour, lw=0.8))
+        elif shape.kind == "arrow":
+            ax.annotate("", (xy[1, 0], xy[1, 1]), (xy[0, 0], xy[0, 1]), arrowprops={"arrowstyle": "->",
+                                                                                   "color": colour})
+        elif shape.kind == "label":
+            ax.annotate(shape.text, (xy[0, 0], xy[0, 1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
+
+
+def _triad(ax: plt.Axes, projection: Projection) -> None:
+    """The global axes as seen in a view without axis-aligned screen directions."""
+    for k, name in enumerate(_AXIS_NAMES):
+        d = projection.apply(np.eye(3)[k])[0] * 0.08
+        ax.annotate("", (0.12 + d[0], 0.12 + d[1]), (0.12, 0.12), xycoords="axes fraction",
+                    arrowprops={"arrowstyle": "->", "color": "k", "lw": 0.8})
+        ax.text(0.12 + 1.3 * d[0], 0.12 + 1.3 * d[1], name, transform=ax.transAxes, fontsize=7)
+
+
+def _panel(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection, low: np.ndarray, high: np.ndarray,
+           title: str) -> None:
+    draw_shapes(ax, shapes, projection)
+    ax.set_xlim(low[0], high[0])
+    ax.set_ylim(low[1], high[1])
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlabel(_axis_label(projection.right), fontsize=7)
+    ax.set_ylabel(_axis_label(projection.up), fontsize=7)
+    if not _axis_label(projection.right):
+        ax.set_xticks([])
+        ax.set_yticks([])
+        _triad(ax, projection)
+    ax.tick_params(labelsize=6)
+    ax.set_title(title, fontsize=8)
+
+
+def draw(view: SystemView, times: Sequence[float], title: str = "") -> bytes:
+    """PNG bytes: one row per time, each with three orthogonal views and an isometric one."""
+    scenes = [build_scene(view, t) for t in times] or [build_scene(view, 0.0)]
+    stamps = [view.times[sample_index(view, t)] if view.times else 0.0 for t in times] or [0.0]
+    fig, grid = plt.subplots(len(scenes), len(VIEWS), figsize=(13, 3.3 * len(scenes)), dpi=80, squeeze=False)
+    for c, projection in enumerate(VIEWS):
+        low, high = bounds(scenes, projection)  # one scale per view: motion between the rows shows
+        for r, shapes in enumerate(scenes):
+            _panel(grid[r, c], shapes, projection, low, high, f"t = {num(stamps[r])} s — {projection.name}")
+    fig.suptitle((title + "\n" if title else "") + LEGEND, fontsize=8)
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png")
+    plt.close(fig)
+    return buffer.getvalue()
+
+
+def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
+    """The picture in words, for models that take no images."""
+    lines = []
+    for t in times:
+        k = sample_index(view, t)
+        at = view.times[k] if view.times else 0.0
+        lines.append(f"at t = {num(at)} s:")
+        shown = 0
+        for body in view.moving_bodies():
+            state = body.state_at(at)
+            if state is None:
+                continue
+            shown += 1
+            if shown > limit:
+                lines.append(f"  … {len(view.moving_bodies()) - limit} more bodies (simulate(code, bodies=[...]))")
+                break
+            half = box_half_sizes(body)
+            shape = "a point"
+            if half is not None and state.rotation is not None and body.principal_axes is not None:
+                long_axis = state.rotation @ body.principal_axes[:, int(np.argmax(half))]
+                shape = (f"a box {' x '.join(num(2 * h) for h in half)} m, longest edge along {vec(long_axis)}")
+            lines.append(f"  {body.label} at {vec(state.position)}: {shape}")
+        markers = view.marker_states[k] if k < len(view.marker_states) else {}
+        for c in view.connectors[:limit]:
+            points = [np.asarray(markers[m][:3]) for m in c.markers if m in markers and len(markers[m]) >= 3]
+            axis = f", axis {vec(c.axis)}" if c.axis and k == 0 else ""
+            if (c.kind in JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
+                lines.append(f"  {c.label} at {vec(points[0])}{axis}")
+            elif len(points) == 2:
+                lines.append(f"  {c.label} from {vec(points[0])} to {vec(points[1])}")
+        if len(view.connectors) > limit:
+            lines.append(f"  … {len(view.connectors) - limit} more connectors")
+    return "\n".join(lines)
+
+
+def shaded_surface(vertices: np.ndarray, triangles: np.ndarray, colour: tuple[float, float, float],
+                   alpha: float = 1.0) -> Poly3DCollection:
+    """A triangulated surface lit from one direction, so edges and holes read in a still picture."""
+    faces = vertices[triangles]
+    normals = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True) + 1e-30
+    light = np.abs(normals @ np.array([0.3, -0.5, 0.8]) / np.linalg.norm([0.3, -0.5, 0.8]))
+    shade = (0.35 + 0.65 * light)[:, None] * np.array(colour)[None, :]
+    return Poly3DCollection(faces, facecolors=np.clip(shade, 0, 1), edgecolors=(0, 0, 0, 0.15), linewidths=0.2,
+                            alpha=alpha)
+
+
+#: (elevation, azimuth, title) of the part's views: three orthogonal and an isometric one
+PART_VIEWS = ((90.0, -90.0, "top: x-y"), (0.0, -90.0, "front: x-z"), (0.0, 0.0, "side: y-z"),
+              (30.0, -60.0, "isometric"))
+
+
+def draw_part(surface: tuple[np.ndarray, np.ndarray], interfaces: dict[str, dict | None]) -> bytes:
+    """PNG bytes of a part's surface from four views, every interface's centre marked and named."""
+    vertices, triangles = (np.asarray(surface[0], float), np.asarray(surface[1]))
+    low, high = vertices.min(axis=0), vertices.max(axis=0)
+    extent = np.maximum(high - low, 0.02 * float(np.max(high - low)) or 1.0)
+    fig = plt.figure(figsize=(13, 3.6), dpi=80)
+    for col, (elev, azim, name) in enumerate(PART_VIEWS):
+        ax = fig.add_subplot(1, 4, col + 1, projection="3d")
+        if col < 3:
+            ax.set_proj_type("ortho")
+        ax.add_collection3d(shaded_surface(vertices, triangles, (0.75, 0.75, 0.8), alpha=0.6))
+        for label, data in interfaces.items():
+            if data and data.get("centre"):
+                ax.scatter(*data["centre"], color="tab:red", s=12)
+                ax.text(*data["centre"], f" {label}", fontsize=7, color="tab:red")
+        for k, axis in enumerate("xyz"):
+            getattr(ax, f"set_{axis}lim")(low[k] - 0.04 * extent[k], high[k] + 0.04 * extent[k])
+            getattr(ax, f"set_{axis}label")(f"{axis} [m]", fontsize=7)
+        ax.set_box_aspect(tuple(extent * 1.08))
+        ax.tick_params(labelsize=5)
+        ax.view_init(elev=elev, azim=azim)
+        ax.set_title(name, fontsize=8)
+    fig.suptitle("the program's part; red: interface centres", fontsize=8)
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88, wspace=0.05)
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png")
+    plt.close(fig)
+    return buffer.getvalue()
+
+
+def describe_part(surface: tuple[np.ndarray, np.ndarray], interfaces: dict[str, dict | None]) -> str:
+    vertices = np.asarray(surface[0], float)
+    lines = [f"a part spanning {vec(vertices.min(axis=0))} to {vec(vertices.max(axis=0))} m, "
+             f"{len(surface[1])} surface triangles"]
+    for label, data in interfaces.items():
+        if data:
+            lines.append(f"  interface '{label}': centre {vec(data.get('centre'))}, mean outward normal "
+                         f"{direction(data.get('mean_normal'))}, area {num(float(data.get('area') or 0.0))} m², "
+                         f"{data.get('geometry_faces')} geometry face(s)")
+    return "\n".join(lines)

@@ -1,0 +1,121 @@
+"""The child side of the model inspector: the state of a program's system, read from Exudyn itself.
+
+What a body's items say (mass, inertia, reference coordinates) the parent reads from the captured
+items; what only the live system knows is recorded here: where every body is, how it is turned and
+how fast it moves (Exudyn's own outputs, so Euler parameters, Rxyz rotations and 2D nodes all come
+out alike), the global position of every marker, and which ODE2 coordinates belong to which node.
+States are taken at t = 0 (after ``Assemble``) and at the first step at or after each requested
+time. Every call is guarded: an item Exudyn cannot describe is left out, never a failed run.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+#: Object types whose state is read with ``GetObjectOutputBody``.
+BODY_TYPES = frozenset({"MassPoint", "MassPoint2D", "RigidBody", "RigidBody2D", "Ground"})
+#: Flexible bodies: their floating frame is a rigid node, read with ``GetNodeOutput``.
+FLEXIBLE_TYPES = frozenset({"ObjectFFRFreducedOrder", "FFRFreducedOrder", "ObjectFFRF", "FFRF"})
+_QUANTITIES = (("p", "Position"), ("v", "Velocity"), ("R", "RotationMatrix"), ("w", "AngularVelocity"))
+_MAX_MARKERS = 2000
+
+
+def _vector(value: Any) -> list[float] | None:
+    array = np.asarray(value, dtype=float).ravel()
+    if not np.all(np.isfinite(array)):
+        return None
+    return [float(x) for x in array]
+
+
+class InspectionRecorder:
+    """Collects states of one system at t = 0 and at requested times."""
+
+    def __init__(self, mbs: Any, api: dict[str, Any], times: list[float]) -> None:
+        self.mbs = mbs
+        self.api = api
+        self.out = api["OutputVariableType"]  # bound before the program ran (it may replace exudyn's)
+        self.configurations = api["ConfigurationType"]
+        self.pending = sorted(float(t) for t in times)
+        self.states: list[dict[str, Any]] = []
+        data = mbs.systemData
+        self.objects = [api["GetObject"](mbs, i) for i in range(api["NumberOfObjects"](data))]
+        self.n_markers = min(api["NumberOfMarkers"](data), _MAX_MARKERS)
+        self.marker_kinds = [str(api["GetMarker"](mbs, m).get("markerType", "")) for m in range(self.n_markers)]
+
+    def ode2_indices(self) -> dict[str, int]:
+        """First ODE2 index of every node that has ODE2 coordinates (the trajectory's columns)."""
+        out: dict[str, int] = {}
+        for node in range(self.api["NumberOfNodes"](self.mbs.systemData)):
+            try:
+                index = int(self.api["GetNodeODE2Index"](self.mbs, node))
+            except Exception:
+                continue
+            if index >= 0:
+                out[str(node)] = index
+        return out
+
+    def _body_state(self, index: int, item: dict[str, Any], configuration: Any) -> dict[str, Any] | None:
+        kind = str(item.get("objectType", ""))
+        state: dict[str, Any] = {}
+        if kind in BODY_TYPES:
+            com = [float(x) for x in np.ravel(item.get("centerOfMass", [0.0, 0.0, 0.0]))][:3] or [0.0, 0.0, 0.0]
+            com += [0.0] * (3 - len(com))
+            for key, name in _QUANTITIES:
+                try:
+                    value = self.api["GetObjectOutputBody"](self.mbs, index, getattr(self.out, name),
+                                                            localPosition=com, configuration=configuration)
+                except Exception:
+                    continue
+                state[key] = _vector(value)
+        elif kind in FLEXIBLE_TYPES:
+            nodes = item.get("nodeNumbers") or []
+            if not nodes:
+                return None
+            for key, name in _QUANTITIES:
+                try:
+                    value = self.api["GetNodeOutput"](self.mbs, int(nodes[0]), getattr(self.out, name),
+                                                      configuration=configuration)
+                except Exception:
+                    continue
+                state[key] = _vector(value)
+        else:
+            return None
+        return state or None
+
+    def take(self, t: float, initial: bool = False) -> None:
+        configuration = self.configurations.Initial if initial else self.configurations.Current
+        bodies = {}
+        for index, item in enumerate(self.objects):
+            state = self._body_state(index, item, configuration)
+            if state is not None:
+                bodies[str(index)] = state
+        markers = {}
+        for m in range(self.n_markers):
+            if self.marker_kinds[m] not in ("BodyPosition", "BodyRigid", "NodePosition", "NodeRigid",
+                                            "SuperElementRigid", "SuperElementPosition"):
+                continue
+            marker: dict[str, Any] = {}
+            for key, name in (("p", "Position"), ("R", "RotationMatrix")):
+                if key == "R" and "Rigid" not in self.marker_kinds[m]:
+                    continue
+                try:
+                    value = self.api["GetMarkerOutput"](self.mbs, m, getattr(self.out, name),
+                                                        configuration=configuration)
+                except Exception:
+                    continue
+                marker[key] = _vector(value)
+            if marker.get("p") is not None:
+                markers[str(m)] = marker
+        self.states.append({"t": float(t), "bodies": bodies, "markers": markers})
+
+    def after_step(self, t: float) -> None:
+        """Called from the harness's post-step hook: a state at the first step past each pending time."""
+        while self.pending and t >= self.pending[0] - 1e-12:
+            self.pending.pop(0)
+            if not self.states or abs(self.states[-1]["t"] - t) > 1e-12:
+                self.take(t)
+
+    def result(self) -> dict[str, Any]:
+        return {"ode2": self.ode2_indices(), "states": self.states}
