@@ -82,7 +82,8 @@ async def test_runs_on_their_own_servers_overlap_and_a_shared_server_keeps_its_s
     responder = gold_responder(events, 0.05)
     async with FakeOllama(responder) as a, FakeOllama(responder) as b:
         jobs = [job("m1", "m1", (a.url,), tmp_path), job("m2", "m2", (b.url,), tmp_path),
-                job("m3", "m3", (a.url,), tmp_path)]
+                job("m3", "m3", (a.url,), tmp_path),
+                job("m1-again", "m1", (a.url,), tmp_path, select_template="CI2")]  # fills m1's tail
         results = await run_sweep(jobs, workers=2, display=False)
     assert all("error" not in r for r in results), results
     assert a.max_in_flight == 1 and b.max_in_flight == 1  # batch_size 1: one request at a time per server
