@@ -22,10 +22,15 @@ from rich.progress import (
 Advance = Callable[[bool, int], None]
 
 
+def live_display_enabled() -> bool:
+    """A live display only on a terminal: in CI and pipes it would be lines of escape codes."""
+    return sys.stderr.isatty()
+
+
 @contextmanager
 def progress_bar(total: int, title: str, enabled: bool = True) -> Iterator[Advance]:
     """Yields ``advance(success, tokens)`` to call once per finished task."""
-    if not enabled or not sys.stderr.isatty():
+    if not enabled or not live_display_enabled():
         yield lambda success, tokens=0: None
         return
     passed = 0

@@ -11,7 +11,11 @@
 5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
    realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory;
 6. the harness's CPU per request through the OpenAI backend against a real server (llama.cpp's,
-   ``bench_real_server.py``, needs the ``servers`` extra) beside the fake one.
+   ``bench_real_server.py``, needs the ``servers`` extra) beside the fake one;
+7. a sweep (``bench_farm.py``): 4 models on 4 one-slot servers at a fixed latency, the sweep's wall
+   over the longest single run's wall;
+8. the reference store: a 4-model level-3a sweep's evaluation CPU with the store over without;
+9. ``rescore`` of a 1000-task gold run, grading on the parent's threads against the grading pool.
 
     python scripts/bench.py [--json FILE] [--quick]
 """
@@ -31,6 +35,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import bench_farm
 import bench_real_server
 import bench_scale
 from fake_ollama import FakeOllama, chat_reply
@@ -42,6 +47,7 @@ from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.steps import choose_components, generate_code
 from meceng.eval.chain import Tolerances
 from meceng.pipeline import Evaluator, RunSettings, run_benchmark
+from meceng.pipeline.grading import GradingPool
 from meceng.tasks.registry import default_registry
 from meceng.tools.executor import ExecutionLimits, child_env, execute
 from meceng.tools.warm import WarmPool
@@ -71,15 +77,20 @@ async def isolation_overhead(repeats: int) -> dict[str, float]:
 
 
 async def _evaluate_all(instances, workers: int) -> float:
+    """Grade every instance's ground truth as a candidate, as a run does: the programs on the fork
+    server's workers, grading in the grading pool beside them."""
     pool = WarmPool(child_env())
     await pool.start()
-    evaluator = Evaluator(workers, ExecutionLimits(), Tolerances(), rigid_catalog(), pool)
+    grading = GradingPool(workers)
+    await grading.run(len, ())  # the pool's processes started and warm, as in a run that is under way
+    evaluator = Evaluator(workers, ExecutionLimits(), Tolerances(), rigid_catalog(), pool, grading=grading)
     t0 = time.perf_counter()
     try:
         verdicts = await asyncio.gather(*(evaluator.evaluate(i, i.reference_program, i.required_components, None)
                                           for i in instances))
     finally:
         await pool.close()
+        grading.close()
     assert all(v[0].overall for v in verdicts), "a gold program failed during the benchmark"
     return time.perf_counter() - t0
 
@@ -198,8 +209,27 @@ async def main_async(quick: bool) -> dict[str, object]:
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
     )
+    results["farm"] = await farm_figures(quick)
+    results["bench_wall_s"] = time.perf_counter() - t0
     print(f"bench finished in {results['bench_wall_s']:.0f} s")
     return results
+
+
+async def farm_figures(quick: bool) -> dict[str, object]:
+    """7-9: a sweep of 4 models on 4 servers, the reference store, rescore with and without the
+    grading pool (``bench_farm.py``)."""
+    cores = os.cpu_count() or 1
+    conc = await bench_farm.concurrency(1.0, 1, cores)
+    print(f"7. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
+          f"{conc['sweep_over_longest_run']:.3f}", flush=True)
+    store = await bench_farm.store_cpu(1, cores)
+    print(f"8. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
+          f"{store['store_cpu_ratio']:.3f}", flush=True)
+    rescore = await bench_farm.rescore_figures(2 if quick else 20, cores)
+    print(f"9. rescore of a {rescore['tasks']}-task run: grading in the parent's threads "
+          f"{rescore['threads_s']:.0f} s, in the grading pool {rescore['pool_s']:.0f} s", flush=True)
+    return {"sweep_over_longest_run": conc["sweep_over_longest_run"], "store_cpu_ratio": store["store_cpu_ratio"],
+            "rescore": rescore, "details": {"sweep": conc, "store": store}}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -10,7 +10,9 @@
 Flags override every chosen study; --model, --temperature, --think, --select-template and
 --code-template may be repeated and replace that axis of the grid. A grid point two studies
 share runs once. Run folders under --out are named from their settings: a finished point is
-skipped, an interrupted one resumed.
+skipped, an interrupted one resumed. Runs whose servers are free go at the same time (see
+meceng.farm), their programs on one worker pool; ground truths are executed once into the
+reference store (OUT/references) and reused by every run and later sweep.
 """
 
 from __future__ import annotations
@@ -30,8 +32,10 @@ from rich.table import Table
 from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.cli.arguments import parse_only
+from meceng.farm import SweepJob, run_sweep
 from meceng.logs import configure_logging
-from meceng.pipeline import RunSettings, run_benchmark
+from meceng.pipeline import RunSettings
+from meceng.shard import Shard, pick
 from meceng.sweep import (
     GridPoint,
     ModelSpec,
@@ -58,12 +62,48 @@ def parse_temperature(text: str) -> float | None:
         raise argparse.ArgumentTypeError("temperature must be a number or 'default'") from None
 
 
+def parse_shard(text: str) -> Shard:
+    try:
+        return Shard.parse(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def state_of(spec: SweepSpec, name: str) -> str:
+    if (spec.out / name / "run.json").exists():
+        return "finished"
+    return "resume" if (spec.out / name / "journal.jsonl").exists() else "planned"
+
+
+def plan_json(spec: SweepSpec, planned: list[PlannedRun], jobs: list[SweepJob], shard: Shard | None) -> str:
+    """The plan of this shard (or the whole sweep) for scripts: each run's folder, studies, model,
+    settings, tasks, LLM requests and state."""
+    studies: dict[str, list[str]] = {}
+    for item in planned:
+        studies.setdefault(item.point.name, []).append(item.study)
+    runs = []
+    for job in jobs:
+        assert job.point is not None
+        tasks, requests = point_workload(job.point)
+        runs.append({"folder": str(spec.out / job.name), "study": studies[job.point.name][0],
+                     "studies": studies[job.point.name], "model": job.model, "backend": job.settings.llm.backend,
+                     "hosts": list(job.hosts), "settings": job.settings.to_json(), "tasks": tasks,
+                     "requests": requests, "state": state_of(spec, job.name)})
+    return json.dumps({"shard": str(shard) if shard else None, "runs": runs,
+                       "tasks": sum(r["tasks"] for r in runs), "requests": sum(r["requests"] for r in runs)},
+                      indent=1)
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--spec", type=Path, default=None, help=f"TOML sweep spec (default {DEFAULT_SPEC.name})")
     p.add_argument("--study", action="append", help="run only this study of the spec; repeatable")
     p.add_argument("--dry-run", action="store_true",
                    help="print the planned runs, tasks and LLM requests per study; start nothing")
+    p.add_argument("--json", action="store_true", help="with --dry-run: the plan as JSON, one object per run")
+    p.add_argument("--shard", type=parse_shard, default=None,
+                   help="K/N: only the K-th (from 0) of N parts of the runs, balanced by LLM requests; "
+                        "inside a Slurm array SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT say it")
     p.add_argument("--model", action="append", help="model name; repeat for several (gold = ground truth)")
     p.add_argument("--backend", choices=tuple(DEFAULT_HOSTS), default=None)
     p.add_argument("--host", "--base-url", action="append", dest="host",
@@ -87,6 +127,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", type=Path)
     p.add_argument("--name", default=None, help="run folder name (single grid point only)")
     p.add_argument("--no-progress", action="store_true")
+    p.add_argument("--reference-store", type=Path, default=None,
+                   help="where ground-truth executions are kept for every run and later sweeps "
+                        "(default OUT/references)")
+    p.add_argument("--no-reference-store", action="store_true", help="execute every ground truth in every run")
     return p
 
 
@@ -128,12 +172,7 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
                         overflow="fold")  # a folder name is folded onto a second line, never cut
     for item in planned:
         tasks, requests = point_workload(item.point)
-        if item.shared_with:
-            state = f"shared with {item.shared_with}"
-        elif (spec.out / item.point.name / "run.json").exists():
-            state = "finished"
-        else:
-            state = "resume" if (spec.out / item.point.name / "journal.jsonl").exists() else "planned"
+        state = f"shared with {item.shared_with}" if item.shared_with else state_of(spec, item.point.name)
         runs.add_row(item.study, item.point.name, f"{tasks:,}", f"{requests:,}", state)
     console.print(runs)
     summary = Table(title=spec.description or "Studies", title_justify="left")
@@ -155,27 +194,34 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
                   "two only when all its parts pass.")
 
 
-def run_point(point: GridPoint, spec: SweepSpec, args: argparse.Namespace) -> dict[str, Any]:
-    name = args.name or point.name
-    run_dir = spec.out / name
-    if (run_dir / "run.json").exists():
-        print(f"{name}: finished earlier, skipped")
-        return {"run": str(run_dir / "run.json"), "skipped": True}
-    settings = RunSettings(
-        llm=point.llm(), levels=point.levels, only=point.only, variations=point.variations, seed=point.seed,
-        out=spec.out, run_name=name, workers=spec.workers or max(1, os.cpu_count() or 1),
-        exec_timeout_s=spec.exec_timeout_s, select_template=point.select_template,
-        code_template=point.code_template, progress=not args.no_progress,
-        resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
-    )
-    try:
-        path = asyncio.run(run_benchmark(settings))
-    except Exception as exc:  # one grid point never ends the sweep
-        print(f"{name}: failed: {exc}", file=sys.stderr)
-        return {"run": str(run_dir), "error": str(exc)}
-    print_summary(path)
-    summary = json.loads(path.read_text())["summary"]
-    return {"run": str(path), "overall": summary["rates"]["overall"]}
+def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespace, workers: int) -> list[SweepJob]:
+    """The runs of the sweep with the settings each is started (or resumed) with."""
+    jobs = []
+    for point in points:
+        name = args.name or point.name
+        run_dir = spec.out / name
+        settings = RunSettings(
+            llm=point.llm(), levels=point.levels, only=point.only, variations=point.variations, seed=point.seed,
+            out=spec.out, run_name=name, workers=workers, exec_timeout_s=spec.exec_timeout_s,
+            select_template=point.select_template, code_template=point.code_template,
+            progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor)
+        jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0], point))
+    return jobs
+
+
+def report_results(results: list[dict[str, Any]]) -> None:
+    """After the live display: each run's summary, or why it did not run."""
+    for result in results:
+        name = Path(result["run"]).parent.name if result["run"].endswith("run.json") else Path(result["run"]).name
+        if result.get("skipped"):
+            print(f"{name}: finished earlier, skipped")
+        elif "busy" in result:
+            print(f"{name}: skipped, {result['busy']}")
+        elif "error" in result:
+            print(f"{name}: failed: {result['error']}", file=sys.stderr)
+        else:
+            print_summary(Path(result["run"]))
+            result["overall"] = json.loads(Path(result["run"]).read_text())["summary"]["rates"]["overall"]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -191,8 +237,26 @@ def main(argv: list[str] | None = None) -> int:
     if not points:
         print("error: the sweep has no grid point (no models?)", file=sys.stderr)
         return 2
+    try:
+        shard = args.shard or Shard.from_env()
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    points = pick(points, shard, weight=lambda p: point_workload(p)[1], name=lambda p: p.name)
+    mine = {p.name for p in points}
+    planned = [item for item in planned if item.point.name in mine]
+    workers = spec.workers or max(1, os.cpu_count() or 1)  # one pool for all runs, sized to the machine
+    if args.dry_run and args.json:
+        print(plan_json(spec, planned, sweep_jobs(points, spec, args, workers), shard))
+        return 0
     if args.dry_run:
-        print_plan(spec, planned, Console())
+        if shard is not None:
+            print(f"shard {shard}: {len(points)} runs")
+        if points:
+            print_plan(spec, planned, Console())
+        return 0
+    if not points:
+        print(f"shard {shard}: no runs (more shards than runs)")
         return 0
     if args.name and len(points) > 1:
         print("error: --name needs a single grid point", file=sys.stderr)
@@ -203,7 +267,10 @@ def main(argv: list[str] | None = None) -> int:
               "offline with: python scripts/sweep.py --model gold", file=sys.stderr)
         return 3
     configure_logging(None)
-    results = [run_point(point, spec, args) for point in points]
+    store = None if args.no_reference_store else (args.reference_store or spec.out / "references")
+    results = asyncio.run(run_sweep(sweep_jobs(points, spec, args, workers), workers, args.executor, store,
+                                    display=not args.no_progress))
+    report_results(results)
     print(json.dumps(results, indent=1))
     return 1 if any("error" in r for r in results) else 0
 

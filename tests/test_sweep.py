@@ -9,14 +9,16 @@ from pathlib import Path
 import pytest
 
 from meceng.agents.llm import LLMSettings
+from meceng.shard import Shard, split
 from meceng.sweep import GridPoint, ModelSpec, load_spec, plan, point_workload, study_points, unique_points
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER = ROOT / "sweeps" / "paper.toml"
 
 
-def sweep(*args: str) -> subprocess.CompletedProcess[str]:
-    env = {**os.environ, "COLUMNS": "200"}  # a wide terminal: one table row per line
+def sweep(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    env = {**{k: v for k, v in os.environ.items() if not k.startswith("SLURM_")}, "COLUMNS": "200", **(env or {})}
+    # a wide terminal: one table row per line
     return subprocess.run([sys.executable, str(ROOT / "scripts" / "sweep.py"), *args], capture_output=True,
                           text=True, timeout=600, env=env)
 
@@ -153,3 +155,34 @@ def test_an_unknown_task_in_only_is_refused(tmp_path: Path) -> None:
     spec.write_text('only = ["newtons_cradel"]\n[[models]]\nname = "gold"\nbackend = "gold"\n')
     with pytest.raises(ValueError, match="did you mean newtons_cradle"):
         load_spec(spec)
+
+
+def test_shards_of_the_paper_partition_its_runs_balanced_by_requests() -> None:
+    points = unique_points(plan(load_spec(PAPER)))
+    requests = {p.name: point_workload(p)[1] for p in points}
+    for count in (1, 2, 3, 7, 200):
+        shards = split(points, count, weight=lambda p: point_workload(p)[1], name=lambda p: p.name)
+        names = [p.name for shard in shards for p in shard]
+        assert sorted(names) == sorted(requests) and len(names) == len(set(names))
+        loads = [sum(requests[p.name] for p in shard) for shard in shards]
+        assert max(loads) - min(loads) <= max(requests.values())  # within one run of each other
+        assert shards == split(points, count, weight=lambda p: point_workload(p)[1], name=lambda p: p.name)
+
+
+def test_slurm_array_variables_choose_the_shard_and_dry_run_json_prints_it(tmp_path: Path) -> None:
+    assert Shard.from_env({"SLURM_ARRAY_TASK_ID": "3", "SLURM_ARRAY_TASK_COUNT": "3",
+                           "SLURM_ARRAY_TASK_MIN": "1"}) == Shard(2, 3)
+    assert Shard.from_env({}) is None
+    folders = []
+    for k in range(3):
+        env = {"SLURM_ARRAY_TASK_ID": str(k), "SLURM_ARRAY_TASK_COUNT": "3"}
+        proc = sweep("--spec", str(PAPER), "--dry-run", "--json", "--out", str(tmp_path), env=env)
+        assert proc.returncode == 0, proc.stderr
+        shard = json.loads(proc.stdout)
+        assert shard["shard"] == f"{k}/3"
+        folders += [run["folder"] for run in shard["runs"]]
+        assert all(run["requests"] == 2 * run["tasks"] and run["settings"]["llm"]["model"] == run["model"]
+                   for run in shard["runs"])
+    whole = json.loads(sweep("--spec", str(PAPER), "--dry-run", "--json", "--out", str(tmp_path)).stdout)
+    assert sorted(folders) == sorted(run["folder"] for run in whole["runs"]) and len(folders) == 171
+    assert sweep("--spec", str(PAPER), "--dry-run", "--shard", "3/3").returncode == 2

@@ -39,34 +39,41 @@ class PrioritySlots:
 
     Code-generation requests (priority 0) of tasks that already chose their components go before
     selection requests (priority 1) of new tasks: tasks finish depth-first, so their evaluation
-    overlaps the remaining inference instead of waiting for every selection to be done.
+    overlaps the remaining inference instead of waiting for every selection to be done. When
+    several runs of a sweep share a server's slots, ``rank`` (the run's place in the sweep) comes
+    first: an earlier run is served first and a later one fills only the slots it leaves free.
     """
 
     def __init__(self, capacity: int) -> None:
+        self.capacity = capacity
         self.free = capacity
-        self._waiters: list[tuple[int, int, asyncio.Future[None]]] = []
+        self._waiters: list[tuple[int, int, int, asyncio.Future[None]]] = []
         self._seq = 0
 
-    async def acquire(self, priority: int) -> None:
+    @property
+    def waiting(self) -> int:
+        return len(self._waiters)
+
+    async def acquire(self, priority: int, rank: int = 0) -> None:
         if self.free > 0 and not self._waiters:
             self.free -= 1
             return
         future: asyncio.Future[None] = asyncio.get_running_loop().create_future()
         self._seq += 1
-        heapq.heappush(self._waiters, (priority, self._seq, future))
+        heapq.heappush(self._waiters, (rank, priority, self._seq, future))
         try:
             await future
         except asyncio.CancelledError:
             if future.done() and not future.cancelled():
                 self.release()  # the slot was handed over just as we were cancelled
             else:
-                self._waiters = [w for w in self._waiters if w[2] is not future]
+                self._waiters = [w for w in self._waiters if w[3] is not future]
                 heapq.heapify(self._waiters)
             raise
 
     def release(self) -> None:
         while self._waiters:
-            _, _, future = heapq.heappop(self._waiters)
+            *_, future = heapq.heappop(self._waiters)
             if not future.done():
                 future.set_result(None)  # hand the slot over directly
                 return
@@ -90,7 +97,8 @@ class Endpoint:
 
     @property
     def free(self) -> int:
-        return self.capacity - self.in_flight
+        # the second term counts the other runs of a sweep on shared slots (equal when unshared)
+        return min(self.capacity - self.in_flight, self.slots.free - self.slots.waiting)
 
     def admit(self, now: float) -> bool:
         """Whether a request may be sent: always while the server answers; once it fell silent,
@@ -122,6 +130,16 @@ class EndpointBackend:
             for h in settings.hosts
         ]
         self._pick_lock = asyncio.Lock()
+        self.rank = 0
+
+    def share_slots(self, servers: dict[str, PrioritySlots], rank: int) -> None:
+        """Take each host's slots from ``servers`` (made here for a host not in it yet), so that the
+        runs of a sweep that use one server never have more requests in flight than its slots;
+        ``rank`` orders this backend's waiting requests against the other runs'."""
+        for endpoint in self.endpoints:
+            endpoint.slots = servers.setdefault(endpoint.host, PrioritySlots(endpoint.capacity))
+            endpoint.capacity = endpoint.slots.capacity
+        self.rank = rank
 
     async def chat(self, request: ChatRequest) -> ChatResponse:
         attempts = 0
@@ -155,7 +173,7 @@ class EndpointBackend:
         async with self._pick_lock:
             endpoint = self._choose()
             endpoint.in_flight += 1
-        await endpoint.slots.acquire(PRIORITY.get(request.purpose, 1))
+        await endpoint.slots.acquire(PRIORITY.get(request.purpose, 1), self.rank)
         try:  # the slot is held for exactly one request
             if not endpoint.admit(time.monotonic()):
                 raise LLMError(f"{endpoint.host} gave no answer to {endpoint.silent} requests in a row: not sent",

@@ -26,6 +26,9 @@ from meceng.tools.executor import Execution, ExecutionLimits, execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
+from .grading import GradingPool, offload
+from .store import ReferenceStore, reference_key
+
 
 class ReferenceCache:
     """Ground-truth executions, run once per task instance and shared by everyone who asks."""
@@ -67,9 +70,12 @@ class Evaluator:
 
     def __init__(self, workers: int, limits: ExecutionLimits, tolerances: Tolerances, catalog: Catalog | None = None,
                  pool: WarmPool | None = None, parts: Catalog | None = None,
-                 part_timeout_s: float = 300.0) -> None:
-        self.slots = asyncio.Semaphore(workers)
+                 part_timeout_s: float = 300.0, slots: asyncio.Semaphore | None = None,
+                 store: ReferenceStore | None = None, grading: GradingPool | None = None) -> None:
+        self.slots = slots or asyncio.Semaphore(workers)  # a sweep's runs share one set of slots
         self.pool = pool
+        self.store = store
+        self.grading = grading  # where grading and traces run (None: a thread of this process)
         self.limits = limits
         self.tolerances = tolerances
         self.catalog = catalog or rigid_catalog()
@@ -112,16 +118,28 @@ class Evaluator:
             return await execute(program, "", limits, check=check, pool=self.pool)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
-        if instance.kind == "part":
-            return await self.execute_part(instance.reference_program, instance, check=False)
-        return await self.execute(instance.reference_program, instance, check=False)
+        return await self._ground_truth(instance, instance.reference_program)
+
+    async def _ground_truth(self, instance: TaskInstance, program: str) -> Execution:
+        """A ground-truth execution: from the reference store when there is one, else run here."""
+
+        async def run() -> Execution:
+            if instance.kind == "part":
+                return await self.execute_part(program, instance, check=False)
+            return await self.execute(program, instance, check=False)
+
+        if self.store is None:
+            return await run()
+        limits = replace(self.part_limits, n_modes=instance.part.n_modes) if instance.kind == "part" else self.limits
+        sim = "" if instance.kind == "part" else instance.sim.block()
+        return await self.store.fetch(reference_key(program, sim, limits), run)
 
     async def _reference_at(self, instance: TaskInstance, maxh: float) -> Execution:
         """The ground-truth part meshed with another maxh (run once per instance and size)."""
         key = (instance.key, maxh)
         if key not in self._remeshed:
             program = re.sub(r"GenerateMesh\(maxh=[^)]*\)", f"GenerateMesh(maxh={maxh!r})", instance.reference_program)
-            self._remeshed[key] = asyncio.ensure_future(self.execute_part(program, instance, check=False))
+            self._remeshed[key] = asyncio.ensure_future(self._ground_truth(instance, program))
         return await asyncio.shield(self._remeshed[key])
 
     async def evaluate(
@@ -137,11 +155,11 @@ class Evaluator:
             reference_task = asyncio.ensure_future(self.references.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
-        # off the event loop: graph isomorphism and trajectory resampling take ~10 ms a task, during
-        # which no LLM answer would be read and no request sent
-        verdict = await asyncio.to_thread(
-            evaluate_rigid, candidate, reference, end_time=instance.sim.end_time, steps=instance.sim.steps,
-            selected=selected, required=instance.required_components,
+        # off the event loop and off this process: graph isomorphism and trajectory resampling take
+        # ~10 ms a task, during which no LLM answer would be read, and they scale with the cores
+        verdict = await offload(
+            self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
+            steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
         )
         return verdict, candidate, reference
@@ -183,10 +201,11 @@ class Evaluator:
                 if remeshed.part is not None:
                     frequencies = np.asarray(remeshed.part["eigenfrequencies"], dtype=float)
                     facts["reference_frequencies_at_maxh"] = size
-        load_mesh_library()  # on the loop's thread, before the metrics' worker thread uses it
+        if self.grading is None:
+            load_mesh_library()  # on the loop's thread, before the metrics' worker thread uses it
         t0 = time.perf_counter()
-        stages = await asyncio.to_thread(
-            evaluate_part, produced, truth, selected=selected, required=instance.required_components,
+        stages = await offload(
+            self.grading, evaluate_part, produced, truth, selected=selected, required=instance.required_components,
             dependencies=self.part_catalog.dependency_map(), failure=candidate.error,
             reference_frequencies=frequencies)
         facts["metrics_s"] = time.perf_counter() - t0

@@ -22,9 +22,10 @@ from meceng.eval.chain import RIGID_STAGES, StageResult, Verdict
 from meceng.tasks.base import TaskInstance
 
 from .evaluation import Evaluator
+from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .records import agent_block, agent_generation, lost_record, not_started_record, task_record
-from .rundir import RunWriter
+from .rundir import RunWriter, save_programs
 from .settings import RunSettings
 from .traces import save_traces
 
@@ -80,12 +81,13 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
     first = graded.verdict
     if agent is not None and agent.first_code != agent.final_code:
         first = (await kind.grade(instance, agent.first_code, selection.names, agent.error, keep=False)).verdict
-    files = ctx.writer.save_programs(instance, generation.code)
+    files = await offload(evaluator.grading, save_programs, ctx.writer.run_dir, instance, generation.code)
     record = task_record(instance, selection, generation, graded.verdict, graded.candidate, graded.reference,
                          _times(t0, t_llm, time.perf_counter()), files)
     kind.extend(record, instance, graded, ctx.writer.run_dir)
     # the viewer's plots: the executions are dropped once the record exists
-    traces = await asyncio.to_thread(save_traces, ctx.writer.run_dir, instance.key, graded.candidate, graded.reference)
+    traces = await offload(evaluator.grading, save_traces, ctx.writer.run_dir, instance.key, graded.candidate,
+                           graded.reference)
     if traces is not None:
         record["files"]["traces"] = traces
     if agent is not None:

@@ -19,6 +19,7 @@ from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import Execution, ExecutionLimits
 
 from .evaluation import Evaluator
+from .grading import GradingPool, offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .rundir import record_key, write_atomic
 from .traces import save_traces
@@ -43,20 +44,22 @@ async def evaluate_program(
 
 
 async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
-                  workers: int = max(1, os.cpu_count() or 1)) -> Path:
+                  workers: int = max(1, os.cpu_count() or 1), grading_pool: bool = True) -> Path:
     """Grade the saved programs of a run again with the current evaluator; no LLM is called.
 
     The LLM answers (selection, generation) stay as they were; stages, verdict, categories and
     the summary are recomputed and the record says which evaluator graded it. run.json is
-    replaced atomically; the previous one is kept as run.previous.json.
+    replaced atomically; the previous one is kept as run.previous.json. Grading runs in a pool of
+    ``workers`` processes (``grading_pool=False``: on threads of this process, as it used to).
     """
     registry = registry or default_registry()
     run_path = run_dir / "run.json"
     run = json.loads(run_path.read_text())
     pipeline = run["settings"]["pipeline"]
+    grading = GradingPool(workers) if grading_pool else None  # grading on every core, not on the parent's one
     evaluator = Evaluator(workers, ExecutionLimits(timeout_s=pipeline["exec_timeout_s"]),
                           Tolerances(solution=pipeline["solution_tolerance"]),
-                          part_timeout_s=pipeline.get("part_timeout_s", 300.0))
+                          part_timeout_s=pipeline.get("part_timeout_s", 300.0), grading=grading)
     saved_parts = {record_key(r): r for r in run["tasks"] if r.get("origin")}
 
     def instance_of(record: dict[str, Any]) -> TaskInstance:
@@ -85,8 +88,8 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
                                                        generation.get("error"), keep=False)
         files = dict(record.get("files") or {})
         files.pop("traces", None)
-        traces = await asyncio.to_thread(save_traces, run_dir, record_key(record), graded.candidate,
-                                         graded.reference)
+        traces = await offload(evaluator.grading, save_traces, run_dir, record_key(record), graded.candidate,
+                               graded.reference)
         if traces is not None:  # the plots follow the new grading
             files["traces"] = traces
         regraded = {**record, **graded.verdict.to_json(), "execution": graded.candidate.summary(),
@@ -95,7 +98,11 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
             regraded["repair"] = {**record["repair"], "repaired": graded.verdict.overall}
         return regraded
 
-    run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))
+    try:
+        run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))
+    finally:
+        if grading is not None:
+            await asyncio.to_thread(grading.close)
     run["summary"] = summarize(run["tasks"])
     run["rescored"] = {"evaluator": EVALUATOR_VERSION, "at": dt.datetime.now(dt.UTC).isoformat()}
     os.replace(run_path, run_dir / "run.previous.json")

@@ -14,6 +14,7 @@ import datetime as dt
 import json
 import logging
 import time
+from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import Any
 
@@ -21,6 +22,7 @@ from meceng.agents.cache import CachedBackend, ResponseCache
 from meceng.agents.llm import Backend, make_backend
 from meceng.eval.chain import Tolerances
 from meceng.logs import get_logger
+from meceng.progress import Advance
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import ExecutionLimits, child_env
@@ -29,8 +31,11 @@ from meceng.tools.warm import WarmPool
 from .drafts import repair_instances
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
+from .grading import GradingPool
+from .lock import HEARTBEAT_S, RunLock
 from .records import failed_record
 from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
+from .services import ProgressFactory, SharedServices
 from .settings import RunSettings
 
 log = get_logger("meceng.pipeline")
@@ -51,8 +56,14 @@ async def run_benchmark(
     settings: RunSettings,
     registry: TaskRegistry | None = None,
     backend: Backend | None = None,
+    shared: SharedServices | None = None,
+    progress: ProgressFactory | None = None,
 ) -> Path:
-    """Run every selected task instance and write the run directory; returns run.json's path."""
+    """Run every selected task instance and write the run directory; returns run.json's path.
+
+    ``shared``: the worker slots, fork server and reference store of a sweep whose runs go at the
+    same time (the sweep owns them); ``progress``: the sweep's display instead of this run's bar.
+    """
     registry = registry or default_registry()
     models = registry.select(settings.levels, settings.only or None)
     if not models:
@@ -66,6 +77,26 @@ async def run_benchmark(
     stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
     run_dir = settings.out / (settings.run_name or f"{stamp}_{safe_name(settings.llm.model)}")
     run_dir.mkdir(parents=True, exist_ok=True)
+    lock = RunLock(run_dir)
+    lock.acquire()  # another process on this folder: RunBusy, nothing touched
+    beat = asyncio.ensure_future(_heartbeat(lock))
+    try:
+        return await _run_in(run_dir, settings, instances, backend, own_backend, started, shared, progress)
+    finally:
+        beat.cancel()
+        lock.release()
+
+
+async def _heartbeat(lock: RunLock) -> None:
+    while True:
+        await asyncio.sleep(HEARTBEAT_S)
+        await asyncio.to_thread(lock.heartbeat)
+
+
+async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInstance], backend: Backend,
+                  own_backend: bool, started: float, shared: SharedServices | None,
+                  progress: ProgressFactory | None) -> Path:
+    """The run itself, in a folder this process holds the lock of."""
     writer = RunWriter(run_dir)
     if writer.finished and not settings.resume:
         raise ValueError(f"{run_dir} already holds a run; resume it with --resume {run_dir}")
@@ -78,10 +109,14 @@ async def run_benchmark(
     todo = [i for i in instances if i.key not in done_keys]
     cache = ResponseCache(run_dir / "responses.jsonl")
     backend = CachedBackend(backend, cache, settings.llm)
-    pool = WarmPool(child_env()) if settings.executor == "fork" else None
+    own_pool = shared is None and settings.executor == "fork"
+    pool = WarmPool(child_env()) if own_pool else (shared.pool if shared is not None else None)
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
                           Tolerances(solution=settings.solution_tolerance), pool=pool,
-                          part_timeout_s=settings.part_timeout_s)
+                          part_timeout_s=settings.part_timeout_s,
+                          slots=shared.workers if shared is not None else None,
+                          store=shared.store if shared is not None else None,
+                          grading=shared.grading if shared is not None else GradingPool(settings.workers))
     if settings.agent == "repair":  # the tasks are the instances' failing drafts, graded before the first request
         instances = await repair_instances(instances, evaluator, settings.drafts_per_task)
         todo = [i for i in instances if i.key not in done_keys]
@@ -91,12 +126,18 @@ async def run_benchmark(
     log_handler = attach_run_log(run_dir / "log.jsonl")
     if pool is not None:
         pool_start = asyncio.ensure_future(pool.start())  # the fork server boots while the LLM works
+    if shared is None and evaluator.grading is not None:
+        grading_start = asyncio.ensure_future(evaluator.grading.warm())  # so does the grading pool
     log.info("run started", run_dir=str(run_dir), tasks=len(instances), resumed=len(kept), model=settings.llm.model)
 
-    from meceng.progress import progress_bar
+    if progress is None:
+        from meceng.progress import progress_bar
+
+        def progress(total: int, title: str) -> AbstractContextManager[Advance]:
+            return progress_bar(total, title, enabled=settings.progress)
 
     t0 = time.perf_counter()
-    with progress_bar(len(todo), f"{settings.llm.model}", enabled=settings.progress) as advance:
+    with progress(len(todo), f"{settings.llm.model}") as advance:
 
         async def one(instance: TaskInstance) -> None:
             async with window:
@@ -116,7 +157,11 @@ async def run_benchmark(
         async def close_services() -> None:
             if pool is not None:
                 await asyncio.gather(pool_start, return_exceptions=True)
+            if own_pool and pool is not None:
                 await pool.close()
+            if shared is None and evaluator.grading is not None:
+                await asyncio.gather(grading_start, return_exceptions=True)
+                await asyncio.to_thread(evaluator.grading.close)
             if own_backend:
                 await backend.aclose()
             else:

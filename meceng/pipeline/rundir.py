@@ -6,6 +6,7 @@ Everything a run writes goes through here, so the folder's layout is described i
 
 from __future__ import annotations
 
+import contextvars
 import datetime as dt
 import json
 import logging
@@ -70,6 +71,24 @@ def gpu_telemetry() -> list[dict[str, str]]:
     return [dict(zip(keys, (p.strip() for p in line.split(",")), strict=False)) for line in out.splitlines()]
 
 
+def save_programs(run_dir: Path, instance: TaskInstance, code: str | None) -> dict[str, str]:
+    """Both programs of a task as files with a header (the description wrapped: ~4 ms a task, so
+    the flow runs this in the grading pool). Returns their paths relative to ``run_dir``."""
+    folder = run_dir / "programs" / instance.slug
+    folder.mkdir(parents=True, exist_ok=True)
+    stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
+    reference = folder / f"{stem}_reference.py"
+    write_atomic(reference, instance.reference_program)
+    files = {"reference": str(reference.relative_to(run_dir))}
+    if code is not None:
+        generated = folder / f"{stem}_generated.py"
+        header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
+                                instance.description)
+        write_atomic(generated, f"{header}\n{code}")
+        files["generated"] = str(generated.relative_to(run_dir))
+    return files
+
+
 class RunWriter:
     """The run directory: journal.jsonl as tasks finish, programs/, and run.json at the end."""
 
@@ -86,21 +105,6 @@ class RunWriter:
         folder = self.run_dir / "parts"
         folder.mkdir(parents=True, exist_ok=True)
         return folder / f"{safe_name(instance.key.replace('/', '--'))}.npz"
-
-    def save_programs(self, instance: TaskInstance, code: str | None) -> dict[str, str]:
-        folder = self.run_dir / "programs" / instance.slug
-        folder.mkdir(parents=True, exist_ok=True)
-        stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
-        reference = folder / f"{stem}_reference.py"
-        write_atomic(reference, instance.reference_program)
-        files = {"reference": str(reference.relative_to(self.run_dir))}
-        if code is not None:
-            generated = folder / f"{stem}_generated.py"
-            header = program_header(f"generated program: {instance.task_id} {instance.name}, seed {instance.seed}",
-                                    instance.description)
-            write_atomic(generated, f"{header}\n{code}")
-            files["generated"] = str(generated.relative_to(self.run_dir))
-        return files
 
     def append(self, record: dict[str, Any]) -> None:
         """One line per finished task, on disk before this returns (safe from threads)."""
@@ -169,9 +173,27 @@ def slim_record(record: dict[str, Any]) -> dict[str, Any]:
     return slim
 
 
+_RUN_LOG: contextvars.ContextVar[Path | None] = contextvars.ContextVar("meceng_run_log", default=None)
+
+
+class _ThisRun(logging.Filter):
+    """Lets through only the events of one run: runs of a sweep share the process and the logger,
+    and each task (and thread) a run starts inherits the run's context."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return _RUN_LOG.get() == self.path
+
+
 def attach_run_log(path: Path) -> logging.Handler:
-    """JSON lines of this run's log events into the run folder, for as long as the run lasts."""
+    """JSON lines of this run's log events into the run folder, for as long as the run lasts.
+    Called from the run's own task, so that events of concurrent runs go to their own folders."""
+    _RUN_LOG.set(path)
     handler = logging.FileHandler(path)
+    handler.addFilter(_ThisRun(path))
     handler.setFormatter(structlog.stdlib.ProcessorFormatter(
         processor=structlog.processors.JSONRenderer(),
         foreign_pre_chain=[structlog.processors.add_log_level, structlog.processors.TimeStamper(fmt="iso")]))

@@ -27,7 +27,6 @@ from typing import Any
 import numpy as np
 
 from meceng.syntax import parsing
-from meceng.tools.safety import ALLOWED_IMPORT_ROOTS, PART_IMPORT_ROOTS, check_program
 from meceng.tools.warm import WarmPool
 
 #: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
@@ -174,27 +173,22 @@ async def execute(
     directory under the given names (the saved parts an assembly loads).
     """
     limits = limits or ExecutionLimits()
-    if check:  # parsing a program takes milliseconds: off the event loop, which serves the LLM requests
-        verdict = await asyncio.to_thread(
-            check_program, program, PART_IMPORT_ROOTS if limits.mode == "part" else ALLOWED_IMPORT_ROOTS)
-        if not verdict:
-            where = f" (line {verdict.line})" if verdict.line else ""
-            return Execution(stage="refused", error=f"{verdict.reason}{where}", error_kind="safety")
+    # the static check (``check``) runs in the child, before the program: see runner._refused
     scratch = Path(tempfile.mkdtemp(prefix="meceng-", dir=scratch_root))
     try:
         for name, source in (files or {}).items():
             # a copy, not a link: the program may write in its directory, the saved part stays intact
             shutil.copyfile(source, scratch / Path(name).name)
         if pool is not None:
-            return await _run_warm(scratch, program, sim_block, limits, pool)
-        return await _run_in(scratch, program, sim_block, limits)
+            return await _run_warm(scratch, program, sim_block, limits, pool, check)
+        return await _run_in(scratch, program, sim_block, limits, check)
     finally:
         if not limits.keep_scratch:
             shutil.rmtree(scratch, ignore_errors=True)
 
 
-async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> Execution:
-    job, token = _write_job(scratch, program, sim_block, limits)
+async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits, check: bool) -> Execution:
+    job, token = _write_job(scratch, program, sim_block, limits, check)
     t0 = time.perf_counter()
     proc = await asyncio.create_subprocess_exec(
         sys.executable,
@@ -230,10 +224,11 @@ async def _run_in(scratch: Path, program: str, sim_block: str, limits: Execution
     return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits, token)
 
 
-def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits) -> tuple[Path, str]:
+def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
+               check: bool) -> tuple[Path, str]:
     job = scratch / "job.json"
     token = secrets.token_hex(16)
-    job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token,
+    job.write_text(json.dumps({"program": program, "sim_block": sim_block, "token": token, "check": check,
                                "guard": limits.guard, "isolate_network": limits.isolate_network,
                                "mode": limits.mode, "n_modes": limits.n_modes,
                                "save_fem": limits.save_fem_to is not None,
@@ -256,8 +251,8 @@ def _read_bounded_file(path: Path, limit: int) -> bytes:
 
 
 async def _run_warm(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
-                    pool: WarmPool) -> Execution:
-    job, token = _write_job(scratch, program, sim_block, limits)
+                    pool: WarmPool, check: bool) -> Execution:
+    job, token = _write_job(scratch, program, sim_block, limits, check)
     t0 = time.perf_counter()
     rlimits = {"memory": limits.memory_bytes, "cpu": int(limits.timeout_s) + 5, "file": limits.file_bytes}
     returncode, timed_out = await pool.run(job, child_env(), rlimits, limits.timeout_s)
@@ -301,6 +296,8 @@ def _collect(
         result = json.loads(result_path.read_text())
     except (OSError, ValueError) as exc:
         return Execution(stage=last_stage, error=f"unreadable result: {exc}", error_kind="no_result", **common)
+    if result.get("error_kind") == "safety":  # refused by the static check: the program never ran
+        return Execution(stage="refused", error=result.get("error"), error_kind="safety")
     times = trajectory = None
     traj_path = scratch / f"trajectory-{token}.npy"
     if traj_path.exists():

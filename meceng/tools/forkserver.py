@@ -22,7 +22,7 @@ from typing import Any
 
 PRELOAD = ("numpy", "exudyn", "exudyn.utilities", "exudyn.graphics", "exudyn.interactive", "exudyn.solver",
            "exudyn.FEM", "ngsolve", "netgen.occ", "json", "traceback", "ctypes",
-           "meceng.tools.runner", "meceng.tools.guard", "meceng.tools.warm")
+           "meceng.tools.runner", "meceng.tools.guard", "meceng.tools.warm", "meceng.tools.safety")
 
 
 def _preload() -> None:

@@ -1,0 +1,64 @@
+"""A process pool beside the workers for the CPU work a task needs after its programs ran:
+grading (the level 1-2 chain, the part metrics) and the viewer's traces.
+
+In threads of the parent this work held the GIL: the parent spent ~40-70 ms of its own CPU per
+task serially, so two workers gave 1.54x the tasks per second of one where the machine gives
+2.11x, and a 16-core server would grade on one core. In a pool of processes it runs where the
+cores are; the parent keeps only what must be in one place (scheduling, the journal). Started
+with the ``forkserver`` method: the parent has threads and imported Exudyn, a plain fork of it is
+not safe. The executions go to the pool pickled (arrays are copied, a few hundred KB a task). Like
+every non-fork start method, the pool's processes import a script that started the parent
+(``python some_script.py``) as ``__mp_main__``: a script that grades must keep its work under
+``if __name__ == "__main__"`` (``python -m meceng.cli`` is not imported again).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import multiprocessing
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor
+from functools import partial
+from typing import Any, TypeVar
+
+T = TypeVar("T")
+
+
+PRELOAD = ("meceng.eval.chain", "meceng.pipeline.traces", "meceng.pipeline.rundir")
+
+
+def _warm() -> None:
+    """Import what grading needs once per pool process. PyMeshLab is imported by the first part
+    graded, on the pool process's main thread as it must be (``meceng.eval.parts.load_mesh_library``)."""
+    import meceng.eval.chain
+    import meceng.pipeline.traces  # noqa: F401
+
+
+class GradingPool:
+    """``await pool.run(fn, *args)`` runs a picklable pure function in one of ``processes``."""
+
+    def __init__(self, processes: int) -> None:
+        self.processes = processes
+        context = multiprocessing.get_context("forkserver")
+        # the server imports these once and the pool's processes fork from it warm ("__main__": a
+        # script that started us is imported there, not again in every pool process)
+        context.set_forkserver_preload(["__main__", *PRELOAD])
+        self._executor = ProcessPoolExecutor(processes, mp_context=context, initializer=_warm)
+
+    async def warm(self) -> None:
+        """Start every process now (the first start boots the fork server: ~1 s of imports), so
+        that a run's first grading does not wait for it; a run calls this while the LLM answers."""
+        await asyncio.gather(*(self.run(len, ()) for _ in range(self.processes)))
+
+    async def run(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+        return await asyncio.get_running_loop().run_in_executor(self._executor, partial(fn, *args, **kwargs))
+
+    def close(self) -> None:
+        self._executor.shutdown(wait=True, cancel_futures=True)
+
+
+async def offload(pool: GradingPool | None, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    """``fn`` in the grading pool when there is one, else on a thread of this process."""
+    if pool is not None:
+        return await pool.run(fn, *args, **kwargs)
+    return await asyncio.to_thread(fn, *args, **kwargs)

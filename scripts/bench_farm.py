@@ -1,0 +1,182 @@
+#!/usr/bin/env python
+"""Sweep figures (``meceng.farm``), measured side by side in one run:
+
+1. concurrency: 4 models on 4 fake Ollama servers (one model each, one request at a time, a fixed
+   latency); each model's run alone, then the 4 as one sweep: the sweep's wall over the longest
+   single run's wall (1.0 = the servers never wait for each other);
+2. the reference store: the evaluation CPU (harness process and every program it ran) of a
+   4-model level-3a sweep with the store against the same sweep without it. The 4 models answer
+   with the ground truth (the gold backend under 4 names), so their programs cost as much as the
+   references: that is the dearest case for the store's ratio, a real model's failing programs
+   are cheaper;
+3. rescore of a gold run (1,000 tasks at 20 variations): grading on threads of the parent against
+   grading in the grading pool.
+
+    python scripts/bench_farm.py [--latency 1.0] [--variations 1] [--json FILE]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import resource
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from fake_ollama import FakeOllama, chat_reply, prompted_instance
+
+from meceng.agents.llm import LLMSettings
+from meceng.agents.prompts import gold_code, gold_selection
+from meceng.farm import SweepJob, run_sweep
+from meceng.pipeline import RunSettings, rescore, run_benchmark
+from meceng.tasks.registry import default_registry
+
+RIGID = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")
+PARTS = ("bearing_block_part", "flexible_beam_part", "crank_part_simple", "rod_part_simple")
+MODELS = 4
+
+
+def _jobs(out: Path, urls: list[str], only: tuple[str, ...], levels: tuple[str, ...], variations: int,
+          workers: int) -> list[SweepJob]:
+    jobs = []
+    for k, url in enumerate(urls):
+        llm = LLMSettings(model=f"bench-{k}", backend="ollama" if url else "gold", hosts=(url or "gold",),
+                          batch_size=1)
+        settings = RunSettings(llm=llm, levels=levels, only=only, variations=variations, out=out,
+                               run_name=f"bench-{k}", workers=workers, progress=False)
+        jobs.append(SweepJob(f"bench-{k}", llm.model, settings, len(only) * variations))
+    return jobs
+
+
+async def concurrency(latency: float, variations: int, workers: int) -> dict[str, Any]:
+    """Each model alone, then all together, against 4 servers of one slot each."""
+    registry = default_registry()
+    instances = registry.instances(registry.select(None, RIGID), 0, variations)
+
+    async def respond(body: dict[str, Any]) -> tuple[int, Any, dict[str, str]]:
+        await asyncio.sleep(latency)
+        prompt = body["messages"][-1]["content"]
+        instance = prompted_instance(instances, prompt)
+        if "<components>" in prompt:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        return 200, chat_reply(gold_code(instance.reference_program)), {}
+
+    servers = [FakeOllama(respond) for _ in range(MODELS)]
+    for server in servers:
+        await server.__aenter__()
+    try:
+        urls = [s.url for s in servers]
+        single = []
+        with tempfile.TemporaryDirectory() as out:
+            for job in _jobs(Path(out), urls, RIGID, ("1", "2"), variations, workers):
+                t0 = time.perf_counter()
+                await run_sweep([job], workers, display=False)
+                single.append(time.perf_counter() - t0)
+        with tempfile.TemporaryDirectory() as out:
+            t0 = time.perf_counter()
+            results = await run_sweep(_jobs(Path(out), urls, RIGID, ("1", "2"), variations, workers), workers,
+                                      display=False)
+            sweep = time.perf_counter() - t0
+            assert all(json.loads(Path(r["run"]).read_text())["summary"]["rates"]["overall"] == 1.0
+                       for r in results), results
+        assert all(s.max_in_flight == 1 for s in servers)
+    finally:
+        for server in servers:
+            await server.__aexit__(None, None, None)
+    return {"single_run_walls_s": single, "sweep_wall_s": sweep, "requests_per_run": 2 * len(instances),
+            "latency_s": latency, "sweep_over_longest_run": sweep / max(single)}
+
+
+def _cpu() -> float:
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
+async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
+    """CPU seconds of a 4-model level-3a gold sweep without, then with, the reference store (the
+    fork server is waited for when the sweep ends, so its programs' CPU is counted)."""
+    figures: dict[str, Any] = {}
+    for label, use_store in (("without", False), ("with", True)):
+        with tempfile.TemporaryDirectory() as out:
+            jobs = _jobs(Path(out), [""] * MODELS, PARTS, ("3a",), variations, workers)
+            cpu, t0 = _cpu(), time.perf_counter()
+            results = await run_sweep(jobs, workers, store=Path(out) / "references" if use_store else None,
+                                      display=False)
+            figures[f"{label}_store_cpu_s"] = _cpu() - cpu
+            figures[f"{label}_store_wall_s"] = time.perf_counter() - t0
+            verdicts = [[(t["key"] if "key" in t else t["slug"], t["overall"]) for t in
+                         json.loads(Path(r["run"]).read_text())["tasks"]] for r in results]
+            figures[f"{label}_store_verdicts"] = verdicts
+    assert figures["with_store_verdicts"] == figures["without_store_verdicts"], "the store changed a verdict"
+    figures["tasks"] = MODELS * len(PARTS) * variations
+    figures["store_cpu_ratio"] = figures["with_store_cpu_s"] / figures["without_store_cpu_s"]
+    return figures
+
+
+async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
+    """A gold level 1-2 run (20 variations: 1,000 tasks), rescored twice: grading on threads of the
+    parent (as before the grading pool) and in the grading pool; wall and the parent's own CPU."""
+    figures: dict[str, Any] = {}
+    with tempfile.TemporaryDirectory() as out:
+        llm = LLMSettings(model="gold", backend="gold")
+        settings = RunSettings(llm=llm, variations=variations, out=Path(out), run_name="gold", workers=workers,
+                               progress=False)
+        run_json = await run_benchmark(settings)
+        figures["tasks"] = len(json.loads(run_json.read_text())["tasks"])
+        for label, pool in (("threads", False), ("pool", True)):
+            own, t0 = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
+            await rescore(run_json.parent, workers=workers, grading_pool=pool)
+            wall = time.perf_counter() - t0
+            after = resource.getrusage(resource.RUSAGE_SELF)
+            figures[f"{label}_s"] = wall
+            figures[f"{label}_parent_cpu_ms_per_task"] = 1000 * (
+                after.ru_utime - own.ru_utime + after.ru_stime - own.ru_stime) / figures["tasks"]
+            summary = json.loads(run_json.read_text())["summary"]
+            assert summary["rates"]["overall"] == 1.0, "a gold program failed in the rescore"
+    figures["pool_over_threads"] = figures["pool_s"] / figures["threads_s"]
+    return figures
+
+
+async def main_async(latency: float, variations: int, workers: int) -> dict[str, Any]:
+    conc = await concurrency(latency, variations, workers)
+    print(f"sweep concurrency: {MODELS} models on {MODELS} servers (1 slot, {latency:g} s per request, "
+          f"{conc['requests_per_run']} requests a run): single runs "
+          + ", ".join(f"{w:.1f}" for w in conc["single_run_walls_s"])
+          + f" s, sweep {conc['sweep_wall_s']:.1f} s -> sweep / longest run {conc['sweep_over_longest_run']:.3f}",
+          flush=True)
+    store = await store_cpu(1, workers)
+    print(f"reference store: level-3a sweep of {MODELS} models x {len(PARTS)} parts: evaluation CPU without the "
+          f"store {store['without_store_cpu_s']:.1f} s, with it {store['with_store_cpu_s']:.1f} s -> "
+          f"{store['store_cpu_ratio']:.3f} (verdicts identical)", flush=True)
+    again = await rescore_figures(20, workers)
+    print(f"rescore of a {again['tasks']}-task gold run: grading on the parent's threads {again['threads_s']:.1f} s "
+          f"({again['threads_parent_cpu_ms_per_task']:.1f} ms parent CPU a task), in the grading pool "
+          f"{again['pool_s']:.1f} s ({again['pool_parent_cpu_ms_per_task']:.1f} ms)", flush=True)
+    return {"sweep_concurrency": conc, "reference_store": store, "rescore": again}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--latency", type=float, default=1.0,
+                        help="seconds per request (real servers: selection ~1.5 s, code ~6 s; far below that "
+                             "the 4 runs' evaluation on this machine's cores is what is measured)")
+    parser.add_argument("--variations", type=int, default=1)
+    parser.add_argument("--workers", type=int, default=None)
+    parser.add_argument("--json", type=Path, default=None)
+    args = parser.parse_args(argv)
+    import os
+
+    results = asyncio.run(main_async(args.latency, args.variations, args.workers or os.cpu_count() or 1))
+    if args.json:
+        args.json.write_text(json.dumps(results, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
