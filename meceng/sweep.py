@@ -79,6 +79,9 @@ class Study:
     variations: int = 20
     seed: int = 0
     description: str = ""
+    agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark
+    repair_tools: bool = True
+    drafts_per_task: int = 1
 
 
 @dataclass(frozen=True)
@@ -112,6 +115,9 @@ class GridPoint:
     only: tuple[str, ...] = ()
     variations: int = 20
     seed: int = 0
+    agent: str = "pipeline"
+    repair_tools: bool = True
+    drafts_per_task: int = 1
 
     @property
     def default_sampling(self) -> bool:
@@ -142,6 +148,10 @@ class GridPoint:
             text += "_only-" + "-".join(self.only)
         if self.model.vision:  # only then: the folders of earlier sweeps keep their names
             text += "_vision"
+        if self.agent == "repair":
+            text += f"_repair-tools-{'on' if self.repair_tools else 'off'}-d{self.drafts_per_task}"
+        elif self.agent != "pipeline":
+            text += f"_agent-{self.agent}"
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
 
 
@@ -165,7 +175,8 @@ def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
         raise ValueError(f"{where}: unknown keys {sorted(unknown)}")
 
 
-SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description"}
+SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task"}
+AGENTS = ("pipeline", "loop", "repair")
 GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
@@ -190,8 +201,24 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
         levels=tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"]))),
         only=_only(merged.get("only", [])),
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
-        description=str(data.get("description", "")),
+        description=str(data.get("description", "")), agent=_agent(name, merged.get("agent", "pipeline")),
+        repair_tools=_tools(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
     )
+
+
+def _agent(study: str, value: Any) -> str:
+    if value not in AGENTS:
+        raise ValueError(f"study {study}: agent = {value!r}; choose from {', '.join(AGENTS)}")
+    return str(value)
+
+
+def _tools(study: str, value: Any) -> bool:
+    """``tools = "on"`` / ``"off"`` (or true / false) of a repair study."""
+    if value in ("on", True):
+        return True
+    if value in ("off", False):
+        return False
+    raise ValueError(f"study {study}: tools = {value!r}; choose on or off")
 
 
 def load_spec(path: Path) -> SweepSpec:
@@ -240,7 +267,7 @@ def study_points(study: Study) -> list[GridPoint]:
     for model, temperature, think, select, code in itertools.product(
             study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates):
         point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
-                          study.variations, study.seed)
+                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task)
         points.setdefault(point.name, point)
     return list(points.values())
 

@@ -207,3 +207,46 @@ async def test_a_draft_the_harness_cannot_grade_is_left_out_not_fatal(monkeypatc
     instance = default_registry().get("single_pendulum").instance(0)
     tasks = await module.repair_instances([instance], evaluator, per_task=9)
     assert 0 < len(tasks) == len(candidate_drafts(instance)) - 1
+
+
+def test_a_sweep_study_asks_for_repair_with_and_without_tools(tmp_path: Path) -> None:
+    """[[studies]] with agent = "repair": one run with the tools, one without, and the report's
+    table of what the tools are worth."""
+    spec = tmp_path / "repair.toml"
+    spec.write_text(f"""
+out = "{tmp_path / 'runs'}"
+levels = ["1"]
+only = ["single_pendulum"]
+variations = 1
+[[models]]
+name = "gold"
+[[studies]]
+name = "with tools"
+agent = "repair"
+tools = "on"
+drafts_per_task = 2
+[[studies]]
+name = "without"
+agent = "repair"
+tools = "off"
+drafts_per_task = 2
+""")
+    root = Path(__file__).resolve().parents[1]
+    done = subprocess.run([sys.executable, str(root / "scripts" / "sweep.py"), "--spec", str(spec), "--no-progress"],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-2000:]
+    runs = sorted((tmp_path / "runs").glob("*/run.json"))
+    assert [p.parent.name.endswith(("repair-tools-off-d2", "repair-tools-on-d2")) for p in runs] == [True, True]
+    settings = [json.loads(p.read_text())["settings"]["pipeline"] for p in runs]
+    assert {(s["agent"], s["repair_tools"], s["drafts_per_task"]) for s in settings} == {
+        ("repair", True, 2), ("repair", False, 2)}
+    from meceng.report import build_report
+
+    build_report([tmp_path / "runs"], tmp_path / "report")
+    text = (tmp_path / "report" / "report.md").read_text()
+    assert "Repair benchmark: what the tools are worth" in text and "| gold | 100.0" in text
+    bad = spec.read_text().replace('tools = "off"', 'tools = "maybe"')
+    spec.write_text(bad)
+    refused = subprocess.run([sys.executable, str(root / "scripts" / "sweep.py"), "--spec", str(spec), "--dry-run"],
+                             capture_output=True, text=True, timeout=120)
+    assert refused.returncode == 2 and "tools = 'maybe'" in refused.stderr
