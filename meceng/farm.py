@@ -35,7 +35,7 @@ from meceng.agents.llm import make_backend
 from meceng.agents.scheduler import EndpointBackend, PrioritySlots
 from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
-from meceng.pipeline.grading import GradingPool
+from meceng.pipeline.grading import grading_pool
 from meceng.pipeline.lock import RunBusy
 from meceng.pipeline.services import SharedServices
 from meceng.pipeline.store import ReferenceStore
@@ -182,7 +182,7 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
                     display: bool = True) -> list[dict[str, Any]]:
     """Run the sweep's jobs concurrently; one result per job, in the jobs' order."""
     pool = WarmPool(child_env()) if executor == "fork" else None
-    grading = GradingPool(workers)
+    grading = grading_pool(workers)
     shared = SharedServices(asyncio.Semaphore(workers), pool, ReferenceStore(store) if store else None, grading)
     servers: dict[str, PrioritySlots] = {}
     results: dict[str, dict[str, Any]] = {}
@@ -192,7 +192,8 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
     warming: asyncio.Future[None] | None = None
     with screen.live():
         try:
-            warming = asyncio.ensure_future(grading.warm())  # boots while the first runs start
+            if grading is not None:
+                warming = asyncio.ensure_future(grading.warm())  # boots while the first runs start
             groups = server_groups(jobs)
             await asyncio.gather(*(_drive(group, shared, servers, rank, screen, results) for group in groups))
         finally:
@@ -200,7 +201,8 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
                 await pool.close()
             if warming is not None:
                 await asyncio.gather(warming, return_exceptions=True)
-            await asyncio.to_thread(grading.close)
+            if grading is not None:
+                await asyncio.to_thread(grading.close)
     log.info("sweep finished", runs=len(jobs), wall_s=time.perf_counter() - t0,
              references_made=shared.store.made if shared.store else None,
              references_reused=shared.store.hits if shared.store else None)

@@ -7,6 +7,7 @@ import json
 import shutil
 from pathlib import Path
 
+import pytest
 from records import normalized
 
 from meceng.agents.llm import LLMSettings
@@ -35,3 +36,32 @@ async def test_a_refused_program_never_runs(tmp_path: Path) -> None:
     program = f"import os\nopen({str(marker)!r}, 'w').write('x')\n" + instance.reference_program
     refused = await execute(program, instance.sim.block(), check=True)
     assert refused.stage == "refused" and refused.error_kind == "safety" and not marker.exists()
+
+
+@pytest.mark.parametrize(("script", "guarded"), [
+    ("import asyncio\nfrom meceng.pipeline import run_benchmark\n\nasync def main():\n    pass\n\n"
+     "if __name__ == '__main__':\n    asyncio.run(main())\n", True),
+    ("import asyncio\n\nasync def main():\n    pass\n\nasyncio.run(main())\n", False),
+    ("import json\nrun = json.loads('{}')\n", False),
+    ('"""A docstring."""\nLIMIT = 3\n', True),
+])
+def test_a_script_that_runs_at_its_top_level_gets_no_grading_pool(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                  script: str, guarded: bool) -> None:
+    """The pool's fork server imports the script that started us: one that runs a benchmark at its
+    top level would run it again there (every task of such a run was lost to BrokenProcessPool)."""
+    import sys
+    import types
+
+    from meceng.pipeline import grading
+
+    path = tmp_path / "script.py"
+    path.write_text(script)
+    main = types.ModuleType("__main__")
+    main.__file__ = str(path)
+    main.__spec__ = None
+    monkeypatch.setitem(sys.modules, "__main__", main)
+    assert grading.main_script_is_guarded() is guarded
+    pool = grading.grading_pool(1)
+    assert (pool is not None) is guarded
+    if pool is not None:
+        pool.close()

@@ -21,7 +21,11 @@ from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 from typing import Any, TypeVar
 
+from meceng.logs import get_logger
+from meceng.syntax import parse
+
 T = TypeVar("T")
+log = get_logger(__name__)
 
 
 PRELOAD = ("meceng.eval.chain", "meceng.pipeline.traces", "meceng.pipeline.rundir")
@@ -55,6 +59,49 @@ class GradingPool:
 
     def close(self) -> None:
         self._executor.shutdown(wait=True, cancel_futures=True)
+
+
+def main_script_is_guarded() -> bool:
+    """Whether the pool's processes may import the script that started us: true when there is no
+    script (``python -m``, a console entry point, an interactive session) or when its top level
+    only defines things and keeps its work under ``if __name__ == "__main__"``. A script that runs
+    a benchmark at its top level would run it again in the pool's fork server."""
+    import ast
+    import sys
+
+    main = sys.modules.get("__main__")
+    path = getattr(main, "__file__", None)
+    if main is None or getattr(main, "__spec__", None) is not None or not path:
+        return True
+    try:
+        with open(path, encoding="utf-8") as handle:
+            tree = parse(handle.read())
+    except (OSError, SyntaxError, UnicodeDecodeError):
+        return False
+    quiet = (ast.Import, ast.ImportFrom, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Assign,
+             ast.AnnAssign, ast.If, ast.Expr)
+    for node in tree.body:
+        if not isinstance(node, quiet):
+            return False
+        if isinstance(node, ast.Expr) and not isinstance(node.value, ast.Constant):  # a call at the top level
+            return False
+        if isinstance(node, ast.If) and "__main__" not in ast.dump(node.test):
+            return False
+        if isinstance(node, ast.Assign | ast.AnnAssign) and any(isinstance(n, ast.Call | ast.Await)
+                                                               for n in ast.walk(node)):
+            return False
+    return True
+
+
+def grading_pool(processes: int) -> GradingPool | None:
+    """The pool, or None (grading on threads of this process) when the script that started us
+    does its work at its top level: the pool's fork server would import it and run it again."""
+    if main_script_is_guarded():
+        return GradingPool(processes)
+    log.warning("grading on threads: the script that started MecEng runs at its top level, and the grading "
+                "pool's processes would run it again; keep a script's work under "
+                "if __name__ == '__main__': to grade on every core")
+    return None
 
 
 async def offload(pool: GradingPool | None, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:

@@ -19,7 +19,8 @@ from meceng.tasks.registry import TaskRegistry, default_registry
 from meceng.tools.executor import Execution, ExecutionLimits
 
 from .evaluation import Evaluator
-from .grading import GradingPool, offload
+from .grading import grading_pool as make_grading_pool
+from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .rundir import record_key, write_atomic
 from .traces import save_traces
@@ -56,7 +57,7 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
     run_path = run_dir / "run.json"
     run = json.loads(run_path.read_text())
     pipeline = run["settings"]["pipeline"]
-    grading = GradingPool(workers) if grading_pool else None  # grading on every core, not on the parent's one
+    grading = make_grading_pool(workers) if grading_pool else None  # grading on every core, not on the parent's one
     evaluator = Evaluator(workers, ExecutionLimits(timeout_s=pipeline["exec_timeout_s"]),
                           Tolerances(solution=pipeline["solution_tolerance"]),
                           part_timeout_s=pipeline.get("part_timeout_s", 300.0), grading=grading)

@@ -31,7 +31,7 @@ from meceng.tools.warm import WarmPool
 from .drafts import repair_instances
 from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
-from .grading import GradingPool
+from .grading import grading_pool
 from .lock import HEARTBEAT_S, RunLock
 from .records import failed_record
 from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
@@ -116,7 +116,7 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           part_timeout_s=settings.part_timeout_s,
                           slots=shared.workers if shared is not None else None,
                           store=shared.store if shared is not None else None,
-                          grading=shared.grading if shared is not None else GradingPool(settings.workers))
+                          grading=shared.grading if shared is not None else grading_pool(settings.workers))
     if settings.agent == "repair":  # the tasks are the instances' failing drafts, graded before the first request
         instances = await repair_instances(instances, evaluator, settings.drafts_per_task)
         todo = [i for i in instances if i.key not in done_keys]
