@@ -40,6 +40,22 @@ def tool_call(name: str, **arguments) -> dict:
     return body
 
 
+def scripted(instance, draft: str, tool: str, wrong, seen: list[str]):
+    """A model that calls ``tool`` on its draft and answers the ground truth only when ``wrong``
+    finds the mistake in the tool's answer (else the draft again); the answers go to ``seen``."""
+    def responder(body):
+        messages = body["messages"]
+        if "<components>" in messages[0]["content"]:
+            return 200, chat_reply(gold_selection(instance.required_components)), {}
+        results = [m for m in messages if m["role"] == "tool"]
+        if not results:
+            return 200, tool_call(tool, code=draft), {}
+        seen.append(results[-1]["content"])
+        repaired = wrong(results[-1]["content"])
+        return 200, chat_reply(gold_code(instance.reference_program if repaired else draft)), {}
+    return responder
+
+
 def _floats(text: str) -> list[float]:
     return [float(x) for x in text.split(",")]
 
@@ -61,19 +77,11 @@ async def test_the_inspector_shows_the_third_body_and_the_model_repairs_it(tmp_p
     stated = (p["length2"] + p["length3"] / 2, 0.0, p["length1"])  # link 3's position in the description
     seen: list[str] = []
 
-    def responder(body):
-        messages = body["messages"]
-        if "<components>" in messages[0]["content"]:
-            return 200, chat_reply(gold_selection(instance.required_components)), {}
-        results = [m for m in messages if m["role"] == "tool"]
-        if not results:
-            return 200, tool_call("simulate", code=draft), {}
-        seen.append(results[-1]["content"])
-        match = re.search(r"#3 RigidBody: [^\n]*?position \(([^)]*)\)", results[-1]["content"])
-        if match and not np.allclose(_floats(match.group(1)), stated, atol=1e-3):
-            return 200, chat_reply(gold_code(instance.reference_program)), {}  # the repair
-        return 200, chat_reply(gold_code(draft)), {}
+    def wrong(answer: str) -> bool:
+        match = re.search(r"#3 RigidBody: [^\n]*?position \(([^)]*)\)", answer)
+        return bool(match) and not np.allclose(_floats(match.group(1)), stated, atol=1e-3)
 
+    responder = scripted(instance, draft, "simulate", wrong, seen)
     task, _ = await _agent_run(tmp_path, responder)
     assert f"position ({num(p['length2'] + p['length3'])}, 0, {num(p['length1'])})" in seen[0]
     assert task["agent"]["first_overall"] is False and task["overall"] is True
@@ -135,19 +143,11 @@ async def test_only_the_picture_shows_a_turned_box_and_the_model_repairs_it(tmp_
         await toolbox.simulate(instance.reference_program), 2)
     seen: list[str] = []
 
-    def responder(body):
-        messages = body["messages"]
-        if "<components>" in messages[0]["content"]:
-            return 200, chat_reply(gold_selection(instance.required_components)), {}
-        results = [m for m in messages if m["role"] == "tool"]
-        if not results:
-            return 200, tool_call("snapshot", code=draft), {}
-        seen.append(results[-1]["content"])
-        match = re.search(r"#2 RigidBody at [^\n]*longest edge along \(([^)]*)\)", results[-1]["content"])
-        if match and not np.allclose(np.abs(_floats(match.group(1))), (1, 0, 0), atol=1e-6):
-            return 200, chat_reply(gold_code(instance.reference_program)), {}
-        return 200, chat_reply(gold_code(draft)), {}
+    def wrong(answer: str) -> bool:
+        match = re.search(r"#2 RigidBody at [^\n]*longest edge along \(([^)]*)\)", answer)
+        return bool(match) and not np.allclose(np.abs(_floats(match.group(1))), (1, 0, 0), atol=1e-6)
 
+    responder = scripted(instance, draft, "snapshot", wrong, seen)
     task, _ = await _agent_run(tmp_path, responder)
     assert "the picture in words" in seen[0] and "longest edge along (0, 1, 0)" in seen[0]
     assert task["agent"]["first_overall"] is False and task["overall"] is True
