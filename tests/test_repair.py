@@ -143,6 +143,15 @@ def test_meceng_drafts_prints_labels_and_refuses_an_assembly() -> None:
     assert refused.returncode == 2 and "assembly" in refused.stderr
 
 
+def test_meceng_run_agent_repair_says_the_repair_rate(tmp_path: Path) -> None:
+    done = subprocess.run([sys.executable, "-m", "meceng", "run", "--model", "gold", "--agent", "repair", "--tools",
+                           "off", "--levels", "1", "--only", "single_pendulum", "--variations", "1",
+                           "--drafts-per-task", "2", "--out", str(tmp_path), "--no-progress"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert re.search(r"repair \(tools off\): 2/2 drafts repaired — \w", done.stdout), done.stdout
+
+
 @pytest.mark.slow
 @pytest.mark.timeout(1800)
 @pytest.mark.parametrize(("levels", "least_agreement"), [(("1", "2"), 1.0), (("3a",), 0.95)])

@@ -168,6 +168,11 @@ def print_summary(run_json: Path) -> None:
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
               f"(of which {totals['reasoning']:,} reasoning)")
+    repair = summary.get("repair")
+    if repair:
+        labels = ", ".join(f"{label} {k}/{n}" for label, (k, n) in repair["by_label"].items())
+        print(f"repair (tools {'on' if repair['tools'] else 'off'}): {repair['repaired']}/{repair['tasks']} drafts "
+              f"repaired — {labels}")
     lost = [t for t in run["tasks"] if t.get("first_failure") == "infrastructure"]
     unfit = [t["context_exceeded"] for t in lost if t.get("context_exceeded")]
     if unfit:
