@@ -28,7 +28,7 @@ STAGE_LABELS = {"choose_part_components": "pcomp", "interface_name_match": "ifac
                 "solver_success": "solver", "solution_match": "sol"}
 #: the index row's fields, in order (the page script reads them by these names)
 ROW_FIELDS = ("run", "level", "slug", "seed", "stages", "failure", "categories", "tokens", "llm_s", "eval_s",
-              "href", "status", "origin", "detail", "id", "name", "rounds")
+              "href", "status", "origin", "detail", "id", "name", "rounds", "draft")
 
 
 @dataclass
@@ -114,7 +114,13 @@ def index_row(run_index: int, record: dict[str, Any], columns: dict[str, int]) -
             round(float(timing.get("llm_s", 0.0)), 2), round(float(timing.get("evaluation_s", 0.0)), 2),
             page_path(run_index, record), 2 if infra else int(bool(record.get("overall"))),
             record.get("origin") or "", _failure_detail(record), record.get("id"), record.get("name", ""),
-            agent.get("rounds", -1) if agent else -1]
+            agent.get("rounds", -1) if agent else -1, _draft(record)]
+
+
+def _draft(record: dict[str, Any]) -> str:
+    """A repair record's draft as the index names it: its fault and label."""
+    repair = record.get("repair")
+    return f"{repair['id']} ({repair['label']})" if repair else ""
 
 
 def run_labels(runs: list[ViewRun]) -> list[str]:

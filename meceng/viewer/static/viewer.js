@@ -74,7 +74,7 @@
     var q = (f.q || "").toLowerCase();
     if (q && search === null) {
       search = rows.map(function (r) {
-        return [r[F.slug], r[F.name], r[F.origin], r[F.failure], r[F.detail], r[F.categories], r[F.level],
+        return [r[F.slug], r[F.name], r[F.origin], r[F.draft], r[F.failure], r[F.detail], r[F.categories], r[F.level],
                 "seed " + r[F.seed], D.runs[r[F.run]].label].join(" ").toLowerCase();
       });
     }
@@ -132,7 +132,8 @@
     cells.push("<td title='" + esc(run.label) + "'>" + esc(run.model) + "</td>", "<td>" + esc(r[F.level]) + "</td>");
     cells.push("<td><a href='" + esc(r[F.href]) + "'>" + esc(r[F.slug]) + "</a>" +
                (r[F.origin] ? " <span class='muted'>for " + esc(r[F.origin]) + "</span>" : "") +
-               (r[F.rounds] >= 0 ? " <span class='muted'>agent, " + r[F.rounds] + " rounds</span>" : "") + "</td>");
+               (r[F.rounds] >= 0 ? " <span class='muted'>agent, " + r[F.rounds] + " rounds</span>" : "") +
+               (r[F.draft] ? " <span class='muted'>draft " + esc(r[F.draft]) + "</span>" : "") + "</td>");
     cells.push("<td>" + r[F.seed] + "</td>");
     var codes = r[F.stages];
     for (var k = 0; k < codes.length; k++) {
