@@ -226,3 +226,11 @@ async def test_task_pages_draw_the_programs_system_beside_the_ground_truths(tmp_
     centre = lambda shape: np.mean(np.asarray(shape[2]), axis=0)  # noqa: E731
     assert np.allclose(centre(boxes[2]) - centre(truth[2]), [instance.params["length3"] / 2, 0, 0], atol=1e-6)
     assert re.search(r"ground truth, t = 0 s", page)
+
+
+def test_an_agents_picture_is_named_in_its_conversation() -> None:
+    from meceng.viewer.pages import _chat
+
+    html = _chat({"rounds": 1, "transcript": [{"role": "tool", "name": "snapshot", "content": "the picture follows",
+                                               "images": ["PNG, 80000 bytes"]}]})
+    assert "a picture went to the model (PNG, 80000 bytes)" in html

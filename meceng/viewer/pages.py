@@ -163,6 +163,8 @@ def _chat(agent: dict[str, Any]) -> str:
                         + (f" {esc(json.dumps(args))}" if args else "") + "</div>")
             if code:
                 body.append(_details(f"code ({len(code.splitlines())} lines)", _pre(code)))
+        for picture in message.get("images") or []:  # the record keeps a picture's size, not the picture
+            body.append(f"<div class='muted'>a picture went to the model ({esc(picture)})</div>")
         label = f"tool result: {message.get('name', '')}" if role == "tool" else role
         out.append(f"<div class='msg {esc(role)}'><div class='who'>{esc(label)}</div>{''.join(body)}</div>")
     return "".join(out)
