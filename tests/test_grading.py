@@ -42,7 +42,9 @@ async def test_a_refused_program_never_runs(tmp_path: Path) -> None:
     ("import asyncio\nfrom meceng.pipeline import run_benchmark\n\nasync def main():\n    pass\n\n"
      "if __name__ == '__main__':\n    asyncio.run(main())\n", True),
     ("import asyncio\n\nasync def main():\n    pass\n\nasyncio.run(main())\n", False),
-    ("import json\nrun = json.loads('{}')\n", False),
+    ("import asyncio\nresult = asyncio.run(main())\n", False),
+    ("from pathlib import Path\nROOT = Path(__file__).resolve().parents[1]\n\nif __name__ == '__main__':\n"
+     "    print(ROOT)\n", True),
     ('"""A docstring."""\nLIMIT = 3\n', True),
 ])
 def test_a_script_that_runs_at_its_top_level_gets_no_grading_pool(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
