@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.view import Body, BodyState, SystemView
+from meceng.agents.inspect.view import Body, BodyState, Connector, SystemView
 
 Point = tuple[float, float, float]
 
@@ -118,15 +118,20 @@ def extent(view: SystemView) -> float:
     return max(first, 0.1 * spread(None), 1e-3)
 
 
+def connector_points(view: SystemView, c: Connector, k: int) -> list[Point]:
+    """A connector's marker positions at sample ``k`` (the snapshot's picture and its words)."""
+    markers = view.marker_states[k] if k < len(view.marker_states) else {}
+    return [_p(markers[m]) for m in c.markers if m in markers and len(markers[m]) >= 3]
+
+
 def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
     """Everything the picture at time ``t`` (the nearest sampled state) shows."""
     k = sample_index(view, t)
     at = view.times[k] if view.times else 0.0
     size = extent(view)
-    markers = view.marker_states[k] if k < len(view.marker_states) else {}
     shapes: list[Shape] = []
     for c in view.connectors:
-        points = [_p(markers[m]) for m in c.markers if m in markers and len(markers[m]) >= 3]
+        points = connector_points(view, c, k)
         if c.kind in JOINTS and points:
             shapes.append(Shape("point", "joint", (points[0],)))
             if c.axis is not None and k == 0:

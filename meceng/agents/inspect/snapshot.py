@@ -33,6 +33,7 @@ from meceng.agents.inspect.scene import (
     bounds,
     box_half_sizes,
     build_scene,
+    connector_points,
     hull,
     sample_index,
 )
@@ -155,9 +156,8 @@ def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
                 long_axis = state.rotation @ body.principal_axes[:, int(np.argmax(half))]
                 shape = (f"a box {' x '.join(num(2 * h) for h in half)} m, longest edge along {vec(long_axis)}")
             lines.append(f"  {body.label} at {vec(state.position)}: {shape}")
-        markers = view.marker_states[k] if k < len(view.marker_states) else {}
         for c in view.connectors[:limit]:
-            points = [np.asarray(markers[m][:3]) for m in c.markers if m in markers and len(markers[m]) >= 3]
+            points = connector_points(view, c, k)
             axis = f", axis {vec(c.axis)}" if c.axis and k == 0 else ""
             if (c.kind in JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
                 lines.append(f"  {c.label} at {vec(points[0])}{axis}")
