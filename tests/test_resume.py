@@ -98,3 +98,31 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
     # the plots follow the new grading: the tampered program left no trajectory, the ground truth did
     with np.load(tmp_path / "r" / after["tasks"][0]["files"]["traces"]) as data:
         assert "cand_t" not in data.files and "ref_t" in data.files
+
+
+def test_rescore_options_give_the_same_verdicts_and_fill_the_store(tmp_path: Path) -> None:
+    """Cold interpreters and the fork server grade alike; a store given to rescore is filled with
+    the ground truths and used by the next rescore; a wrong option is refused with exit 2."""
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "run", "--model", "gold", "--only", "3,11",
+                           "--variations", "1", "--out", str(tmp_path), "--name", "r", "--no-progress"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    run_json = tmp_path / "r" / "run.json"
+    run = json.loads(run_json.read_text())
+    record = run["tasks"][0]
+    record["generation"]["code"] = record["generation"]["code"].replace("mbs.Assemble()", "raise ValueError('x')")
+    run_json.write_text(json.dumps(run))
+    store = tmp_path / "references"
+    verdicts = []
+    for options in (["--executor", "subprocess", "--workers", "1"], ["--store", str(store)], ["--store", str(store)]):
+        proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r"), *options],
+                              capture_output=True, text=True, timeout=300)
+        assert proc.returncode == 0, proc.stderr
+        tasks = json.loads(run_json.read_text())["tasks"]
+        verdicts.append([(t["slug"], t["overall"], t["first_failure"]) for t in tasks])
+    assert verdicts[0] == verdicts[1] == verdicts[2]
+    assert verdicts[0][0][1] is False and verdicts[0][1][1] is True
+    assert len(list(store.glob("*/*.pkl"))) == 2  # one ground truth per task, made once
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r"), "--executor", "cold"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 2 and "--executor" in proc.stderr

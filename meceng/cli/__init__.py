@@ -109,6 +109,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("rescore", help="grade the saved programs of a run again, without any LLM call")
     p.add_argument("run_dir", type=Path)
+    p.add_argument("--workers", type=positive_int, default=None,
+                   help="programs run and graded at once (default: the machine's cores)")
+    p.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
+                   help="fork: children of a warm fork server (default); subprocess: a cold interpreter each")
+    p.add_argument("--store", type=Path, default=None,
+                   help="a reference store (a sweep's references/ folder): ground truths made once are reused")
     p.set_defaults(func=cmd_rescore)
 
     p = sub.add_parser("run", help="run the benchmark for one model")

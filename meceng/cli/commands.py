@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import os
 import sys
 from pathlib import Path
 from typing import Any
@@ -236,7 +237,8 @@ def cmd_rescore(args: argparse.Namespace) -> int:
     if not (run_dir / "run.json").exists():
         print(f"error: {run_dir} holds no run.json", file=sys.stderr)
         return 2
-    path = asyncio.run(rescore(run_dir))
+    workers = args.workers or max(1, os.cpu_count() or 1)
+    path = asyncio.run(rescore(run_dir, workers=workers, executor=args.executor, store=args.store, progress=True))
     print_summary(path)
     return 0
 

@@ -107,15 +107,14 @@ class Evaluator:
         # the states at t = 0 and at the end: the viewer's pictures of the system (reading them does not
         # touch the solution)
         limits = replace(self.limits, inspect_times=(instance.sim.end_time,))
-        async with self.slots:
-            return await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files)
+        return await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files,
+                             slots=self.slots)
 
     async def execute_part(self, program: str, instance: TaskInstance, check: bool,
                            save_to: Path | None = None) -> Execution:
         limits = replace(self.part_limits, n_modes=instance.part.n_modes,
                          save_fem_to=str(save_to) if save_to is not None else None)
-        async with self.slots:
-            return await execute(program, "", limits, check=check, pool=self.pool)
+        return await execute(program, "", limits, check=check, pool=self.pool, slots=self.slots)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self._ground_truth(instance, instance.reference_program)

@@ -14,15 +14,18 @@ from typing import Any
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.aggregate import summarize
 from meceng.eval.chain import StageResult, Tolerances, Verdict
+from meceng.progress import progress_bar
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import TaskRegistry, default_registry
-from meceng.tools.executor import Execution, ExecutionLimits
+from meceng.tools.executor import Execution, ExecutionLimits, child_env
+from meceng.tools.warm import WarmPool
 
 from .evaluation import Evaluator
 from .grading import grading_pool as make_grading_pool
 from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
 from .rundir import record_key, write_atomic
+from .store import ReferenceStore
 from .traces import save_traces
 
 
@@ -45,22 +48,29 @@ async def evaluate_program(
 
 
 async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
-                  workers: int = max(1, os.cpu_count() or 1), grading_pool: bool = True) -> Path:
+                  workers: int = max(1, os.cpu_count() or 1), grading_pool: bool = True,
+                  executor: str = "fork", store: Path | None = None, progress: bool = False) -> Path:
     """Grade the saved programs of a run again with the current evaluator; no LLM is called.
 
     The LLM answers (selection, generation) stay as they were; stages, verdict, categories and
     the summary are recomputed and the record says which evaluator graded it. run.json is
-    replaced atomically; the previous one is kept as run.previous.json. Grading runs in a pool of
-    ``workers`` processes (``grading_pool=False``: on threads of this process, as it used to).
+    replaced atomically; the previous one is kept as run.previous.json.
+
+    Programs run in children of the warm fork server (``executor="subprocess"``: a cold
+    interpreter each, ~0.1 s more a program), ground truths come from the reference ``store`` when
+    one is given (a sweep's), and grading runs in a pool of ``workers`` processes
+    (``grading_pool=False``: on threads of this process).
     """
     registry = registry or default_registry()
     run_path = run_dir / "run.json"
     run = json.loads(run_path.read_text())
     pipeline = run["settings"]["pipeline"]
     grading = make_grading_pool(workers) if grading_pool else None  # grading on every core, not on the parent's one
+    pool = WarmPool(child_env()) if executor == "fork" else None
     evaluator = Evaluator(workers, ExecutionLimits(timeout_s=pipeline["exec_timeout_s"]),
-                          Tolerances(solution=pipeline["solution_tolerance"]),
-                          part_timeout_s=pipeline.get("part_timeout_s", 300.0), grading=grading)
+                          Tolerances(solution=pipeline["solution_tolerance"]), pool=pool,
+                          part_timeout_s=pipeline.get("part_timeout_s", 300.0), grading=grading,
+                          store=ReferenceStore(store) if store is not None else None)
     saved_parts = {record_key(r): r for r in run["tasks"] if r.get("origin")}
 
     def instance_of(record: dict[str, Any]) -> TaskInstance:
@@ -99,9 +109,17 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
             regraded["repair"] = {**record["repair"], "repaired": graded.verdict.overall}
         return regraded
 
+    async def counted(record: dict[str, Any], advance: Any) -> dict[str, Any]:
+        regraded = await one(record)
+        advance(bool(regraded.get("overall")), 0)
+        return regraded
+
     try:
-        run["tasks"] = list(await asyncio.gather(*(one(r) for r in run["tasks"])))
+        with progress_bar(len(run["tasks"]), f"rescore {run_dir.name}", enabled=progress) as advance:
+            run["tasks"] = list(await asyncio.gather(*(counted(r, advance) for r in run["tasks"])))
     finally:
+        if pool is not None:
+            await pool.close()
         if grading is not None:
             await asyncio.to_thread(grading.close)
     run["summary"] = summarize(run["tasks"])

@@ -165,12 +165,15 @@ async def execute(
     check: bool = True,
     pool: WarmPool | None = None,
     files: Mapping[str, Path] | None = None,
+    slots: asyncio.Semaphore | None = None,
 ) -> Execution:
     """Statically check, then run ``program`` with ``sim_block`` as its solver block.
 
     With a ``pool`` the child is forked from the warm fork server, otherwise a cold interpreter
     is started; both get the same isolation. ``files`` are put into the program's working
-    directory under the given names (the saved parts an assembly loads).
+    directory under the given names (the saved parts an assembly loads). ``slots`` bound the
+    children alive at once; one is held only while the child lives, so writing the job and reading
+    the results (parent work) overlap with the next child's run instead of leaving a core idle.
     """
     limits = limits or ExecutionLimits()
     # the static check (``check``) runs in the child, before the program: see runner._refused
@@ -180,15 +183,23 @@ async def execute(
             # a copy, not a link: the program may write in its directory, the saved part stays intact
             shutil.copyfile(source, scratch / Path(name).name)
         if pool is not None:
-            return await _run_warm(scratch, program, sim_block, limits, pool, check)
-        return await _run_in(scratch, program, sim_block, limits, check)
+            return await _run_warm(scratch, program, sim_block, limits, pool, check, slots)
+        return await _run_in(scratch, program, sim_block, limits, check, slots)
     finally:
         if not limits.keep_scratch:
             shutil.rmtree(scratch, ignore_errors=True)
 
 
-async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits, check: bool) -> Execution:
+async def _run_in(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits, check: bool,
+                  slots: asyncio.Semaphore | None) -> Execution:
     job, token = _write_job(scratch, program, sim_block, limits, check)
+    async with slots or contextlib.nullcontext():
+        returncode, timed_out, stdout, stderr, wall = await _run_cold(scratch, job, limits)
+    return _collect(scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
+
+
+async def _run_cold(scratch: Path, job: Path, limits: ExecutionLimits,
+                    ) -> tuple[int | None, bool, bytes, bytes, float]:
     t0 = time.perf_counter()
     proc = await asyncio.create_subprocess_exec(
         sys.executable,
@@ -220,8 +231,7 @@ async def _run_in(scratch: Path, program: str, sim_block: str, limits: Execution
         stdout, stderr = await asyncio.wait_for(readers, timeout=5.0)
     except TimeoutError:
         stdout, stderr = b"", b"[output not collected: a child kept the pipes open]"
-    wall = time.perf_counter() - t0
-    return _collect(scratch, proc.returncode, timed_out, stdout, stderr, wall, limits, token)
+    return proc.returncode, timed_out, stdout, stderr, time.perf_counter() - t0
 
 
 def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
@@ -251,12 +261,13 @@ def _read_bounded_file(path: Path, limit: int) -> bytes:
 
 
 async def _run_warm(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
-                    pool: WarmPool, check: bool) -> Execution:
+                    pool: WarmPool, check: bool, slots: asyncio.Semaphore | None) -> Execution:
     job, token = _write_job(scratch, program, sim_block, limits, check)
-    t0 = time.perf_counter()
     rlimits = {"memory": limits.memory_bytes, "cpu": int(limits.timeout_s) + 5, "file": limits.file_bytes}
-    returncode, timed_out = await pool.run(job, child_env(), rlimits, limits.timeout_s)
-    wall = time.perf_counter() - t0
+    async with slots or contextlib.nullcontext():
+        t0 = time.perf_counter()
+        returncode, timed_out = await pool.run(job, child_env(), rlimits, limits.timeout_s)
+        wall = time.perf_counter() - t0
     stdout = _read_bounded_file(scratch / "stdout.txt", limits.output_bytes)
     stderr = _read_bounded_file(scratch / "stderr.txt", limits.output_bytes)
     # reading the result, trajectory and part files: off the event loop
