@@ -67,3 +67,51 @@ def test_a_script_that_runs_at_its_top_level_gets_no_grading_pool(tmp_path: Path
     assert (pool is not None) is guarded
     if pool is not None:
         pool.close()
+
+
+POOL_USER = """
+import asyncio, multiprocessing.forkserver, os, sys, time
+from meceng.pipeline.grading import GradingPool
+
+async def main():
+    pool = GradingPool(2)
+    await pool.warm()
+    server = multiprocessing.forkserver._forkserver._forkserver_pid
+    print(server, flush=True)
+    time.sleep(600)
+
+if __name__ == "__main__":
+    asyncio.run(main())
+"""
+
+
+def _running(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return state != "Z"  # a zombie has ended; reaping it is its new parent's business
+
+
+def test_the_pool_leaves_with_a_killed_parent(tmp_path: Path) -> None:
+    """SIGKILL of the process using the pool: its processes (children of the pool's fork server,
+    waiting for work on a pipe nobody closes) and the fork server end too, instead of staying
+    behind with their memory after every killed sweep."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    script = tmp_path / "user.py"
+    script.write_text(POOL_USER)
+    proc = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True)
+    assert proc.stdout is not None
+    server = int(proc.stdout.readline())
+    pids = [server, *(int(p) for p in Path(f"/proc/{server}/task/{server}/children").read_text().split())]
+    assert len(pids) == 3 and all(_running(p) for p in pids)  # the fork server and the pool's 2 processes
+    proc.send_signal(signal.SIGKILL)
+    proc.wait(timeout=30)
+    deadline = time.monotonic() + 20
+    while any(_running(p) for p in pids) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert not [p for p in pids if _running(p)]

@@ -16,6 +16,10 @@ from __future__ import annotations
 
 import asyncio
 import multiprocessing
+import os
+import select
+import threading
+import time
 from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from functools import partial
@@ -31,11 +35,39 @@ log = get_logger(__name__)
 PRELOAD = ("meceng.eval.chain", "meceng.pipeline.traces", "meceng.pipeline.rundir")
 
 
-def _warm() -> None:
-    """Import what grading needs once per pool process. PyMeshLab is imported by the first part
-    graded, on the pool process's main thread as it must be (``meceng.eval.parts.load_mesh_library``)."""
+def _warm(parent: int) -> None:
+    """Import what grading needs once per pool process, and leave when ``parent`` (the process
+    that made the pool) is gone. PyMeshLab is imported by the first part graded, on the pool
+    process's main thread as it must be (``meceng.eval.parts.load_mesh_library``)."""
     import meceng.eval.chain
     import meceng.pipeline.traces  # noqa: F401
+
+    threading.Thread(target=_leave_with, args=(parent,), daemon=True, name="leave-with-parent").start()
+
+
+def _leave_with(parent: int) -> None:
+    """A pool process is a child of the pool's fork server, not of the process that uses the pool,
+    and it waits for work on a pipe that a killed parent (SIGKILL, an out-of-memory kill) never
+    closes; it also keeps the fork server alive. So it watches the parent itself: a pidfd becomes
+    readable when that process ends (no race with a reused pid, unlike polling the number)."""
+    try:
+        handle = os.pidfd_open(parent)
+    except (OSError, AttributeError):  # no pidfd (an old kernel): poll the pid instead
+        while _alive(parent):
+            time.sleep(2.0)
+    else:
+        select.select([handle], [], [])
+    os._exit(0)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
 
 
 class GradingPool:
@@ -47,7 +79,8 @@ class GradingPool:
         # the server imports these once and the pool's processes fork from it warm ("__main__": a
         # script that started us is imported there, not again in every pool process)
         context.set_forkserver_preload(["__main__", *PRELOAD])
-        self._executor = ProcessPoolExecutor(processes, mp_context=context, initializer=_warm)
+        self._executor = ProcessPoolExecutor(processes, mp_context=context, initializer=_warm,
+                                             initargs=(os.getpid(),))
 
     async def warm(self) -> None:
         """Start every process now (the first start boots the fork server: ~1 s of imports), so
