@@ -5,12 +5,13 @@
    latency); each model's run alone, then the 4 as one sweep: the sweep's wall over the longest
    single run's wall (1.0 = the servers never wait for each other);
 2. the reference store: the evaluation CPU (harness process and every program it ran) of a
-   4-model level-3a sweep with the store against the same sweep without it. The 4 models answer
-   with the ground truth (the gold backend under 4 names), so their programs cost as much as the
-   references: that is the dearest case for the store's ratio, a real model's failing programs
-   are cheaper;
-3. rescore of a gold run (1,000 tasks at 20 variations): grading on threads of the parent against
-   grading in the grading pool.
+   4-model level-3a sweep with a new store and with the store a previous sweep filled, against
+   the same sweep without it. The 4 models answer with the ground truth (the gold backend under 4
+   names), so each program costs what its reference costs: the store can remove at most the
+   references' half of the CPU, (M + 1) / 2M = 0.625 of it stays with a new store, 0.5 with a
+   filled one (a real model's level-3a programs mesh their part too, failing or not);
+3. rescore of a gold run (1,000 tasks at 20 variations): as before (cold interpreters, grading on
+   threads of the parent) against now (the warm fork server, the grading pool).
 
     python scripts/bench_farm.py [--latency 1.0] [--variations 1] [--json FILE]
 """
@@ -99,29 +100,38 @@ def _cpu() -> float:
 
 
 async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
-    """CPU seconds of a 4-model level-3a gold sweep without, then with, the reference store (the
-    fork server is waited for when the sweep ends, so its programs' CPU is counted)."""
+    """CPU seconds of a 4-model level-3a gold sweep without the reference store, with a new store,
+    and once more with the store the second sweep filled (a later sweep writing to the same place).
+    The fork server is waited for when a sweep ends, so its programs' CPU is counted."""
     figures: dict[str, Any] = {}
-    for label, use_store in (("without", False), ("with", True)):
-        with tempfile.TemporaryDirectory() as out:
-            jobs = _jobs(Path(out), [""] * MODELS, PARTS, ("3a",), variations, workers)
-            cpu, t0 = _cpu(), time.perf_counter()
-            results = await run_sweep(jobs, workers, store=Path(out) / "references" if use_store else None,
-                                      display=False)
-            figures[f"{label}_store_cpu_s"] = _cpu() - cpu
-            figures[f"{label}_store_wall_s"] = time.perf_counter() - t0
-            verdicts = [[(t["key"] if "key" in t else t["slug"], t["overall"]) for t in
-                         json.loads(Path(r["run"]).read_text())["tasks"]] for r in results]
-            figures[f"{label}_store_verdicts"] = verdicts
-    assert figures["with_store_verdicts"] == figures["without_store_verdicts"], "the store changed a verdict"
+    with tempfile.TemporaryDirectory() as scratch:
+        store = Path(scratch) / "references"
+        for label, use_store in (("without", False), ("with", True), ("filled", True)):
+            with tempfile.TemporaryDirectory() as out:
+                jobs = _jobs(Path(out), [""] * MODELS, PARTS, ("3a",), variations, workers)
+                cpu, t0 = _cpu(), time.perf_counter()
+                results = await run_sweep(jobs, workers, store=store if use_store else None, display=False)
+                figures[f"{label}_store_cpu_s"] = _cpu() - cpu
+                figures[f"{label}_store_wall_s"] = time.perf_counter() - t0
+                verdicts = [[(t["key"] if "key" in t else t["slug"], t["overall"]) for t in
+                             json.loads(Path(r["run"]).read_text())["tasks"]] for r in results]
+                figures[f"{label}_store_verdicts"] = verdicts
+    assert figures["with_store_verdicts"] == figures["without_store_verdicts"] == figures["filled_store_verdicts"], \
+        "the store changed a verdict"
     figures["tasks"] = MODELS * len(PARTS) * variations
     figures["store_cpu_ratio"] = figures["with_store_cpu_s"] / figures["without_store_cpu_s"]
+    figures["filled_store_cpu_ratio"] = figures["filled_store_cpu_s"] / figures["without_store_cpu_s"]
+    # each model's program costs what its reference costs (gold): M candidates and 1 reference
+    # against M and M is this sweep's floor with a new store, M and 0 against M and M with a filled one
+    figures["floor_new_store"] = (MODELS + 1) / (2 * MODELS)
+    figures["floor_filled_store"] = MODELS / (2 * MODELS)
     return figures
 
 
 async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
-    """A gold level 1-2 run (20 variations: 1,000 tasks), rescored twice: grading on threads of the
-    parent (as before the grading pool) and in the grading pool; wall and the parent's own CPU."""
+    """A gold level 1-2 run (20 variations: 1,000 tasks), rescored as before this issue (a cold
+    interpreter a program, grading on the parent's threads), with the fork server alone, and as now
+    (the fork server and the grading pool); wall and the parent's own CPU a task."""
     figures: dict[str, Any] = {}
     with tempfile.TemporaryDirectory() as out:
         llm = LLMSettings(model="gold", backend="gold")
@@ -129,9 +139,10 @@ async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
                                progress=False)
         run_json = await run_benchmark(settings)
         figures["tasks"] = len(json.loads(run_json.read_text())["tasks"])
-        for label, pool in (("threads", False), ("pool", True)):
+        for label, executor, pool in (("before", "subprocess", False), ("fork_threads", "fork", False),
+                                      ("now", "fork", True)):
             own, t0 = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
-            await rescore(run_json.parent, workers=workers, grading_pool=pool)
+            await rescore(run_json.parent, workers=workers, grading_pool=pool, executor=executor)
             wall = time.perf_counter() - t0
             after = resource.getrusage(resource.RUSAGE_SELF)
             figures[f"{label}_s"] = wall
@@ -139,7 +150,7 @@ async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
                 after.ru_utime - own.ru_utime + after.ru_stime - own.ru_stime) / figures["tasks"]
             summary = json.loads(run_json.read_text())["summary"]
             assert summary["rates"]["overall"] == 1.0, "a gold program failed in the rescore"
-    figures["pool_over_threads"] = figures["pool_s"] / figures["threads_s"]
+    figures["now_over_before"] = figures["now_s"] / figures["before_s"]
     return figures
 
 
@@ -152,12 +163,15 @@ async def main_async(latency: float, variations: int, workers: int) -> dict[str,
           flush=True)
     store = await store_cpu(1, workers)
     print(f"reference store: level-3a sweep of {MODELS} models x {len(PARTS)} parts: evaluation CPU without the "
-          f"store {store['without_store_cpu_s']:.1f} s, with it {store['with_store_cpu_s']:.1f} s -> "
-          f"{store['store_cpu_ratio']:.3f} (verdicts identical)", flush=True)
+          f"store {store['without_store_cpu_s']:.1f} s, with a new store {store['with_store_cpu_s']:.1f} s -> "
+          f"{store['store_cpu_ratio']:.3f} (floor {store['floor_new_store']:.3f}), with the filled store "
+          f"{store['filled_store_cpu_s']:.1f} s -> {store['filled_store_cpu_ratio']:.3f} "
+          f"(floor {store['floor_filled_store']:.3f}); verdicts identical", flush=True)
     again = await rescore_figures(20, workers)
-    print(f"rescore of a {again['tasks']}-task gold run: grading on the parent's threads {again['threads_s']:.1f} s "
-          f"({again['threads_parent_cpu_ms_per_task']:.1f} ms parent CPU a task), in the grading pool "
-          f"{again['pool_s']:.1f} s ({again['pool_parent_cpu_ms_per_task']:.1f} ms)", flush=True)
+    print(f"rescore of a {again['tasks']}-task gold run: before (cold interpreters, grading on the parent's threads) "
+          f"{again['before_s']:.1f} s ({again['before_parent_cpu_ms_per_task']:.1f} ms parent CPU a task), fork "
+          f"server and threads {again['fork_threads_s']:.1f} s, now (fork server, grading pool) {again['now_s']:.1f} s "
+          f"({again['now_parent_cpu_ms_per_task']:.1f} ms) -> {again['now_over_before']:.2f}", flush=True)
     return {"sweep_concurrency": conc, "reference_store": store, "rescore": again}
 
 
