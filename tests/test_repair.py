@@ -259,3 +259,26 @@ drafts_per_task = 2
     refused = subprocess.run([sys.executable, str(root / "scripts" / "sweep.py"), "--spec", str(spec), "--dry-run"],
                              capture_output=True, text=True, timeout=120)
     assert refused.returncode == 2 and "tools = 'maybe'" in refused.stderr
+
+
+def test_two_drafts_of_one_instance_keep_their_own_program_files(tmp_path: Path) -> None:
+    """A repair run grades several drafts of one instance at once: each answer is its own file
+    (they shared ``seed0_generated.py`` and overwrote each other), and concurrent writers of the
+    shared reference file never rename each other's temporary file (CI: "No such file ... .tmp")."""
+    from concurrent.futures import ThreadPoolExecutor
+    from dataclasses import replace
+
+    from meceng.pipeline.rundir import save_programs
+
+    instance = default_registry().get("single_pendulum").instance(0)
+    drafts = candidate_drafts(instance)[:2]
+    assert len(drafts) == 2
+    tasks = [(replace(instance, draft=d), f"# answer to {d.id}\n") for d in drafts] * 20
+    with ThreadPoolExecutor(8) as pool:
+        saved = list(pool.map(lambda t: save_programs(tmp_path, *t), tasks))
+    generated = {s["generated"] for s in saved}
+    assert len(generated) == 2
+    for files, (task, code) in zip(saved[:2], tasks[:2], strict=True):
+        assert (tmp_path / files["generated"]).read_text().endswith(code)
+        assert (tmp_path / files["reference"]).read_text() == task.reference_program
+    assert not list(tmp_path.rglob("*.tmp"))

@@ -13,6 +13,7 @@ import logging
 import os
 import platform
 import re
+import secrets
 import threading
 from pathlib import Path
 from typing import Any
@@ -35,9 +36,15 @@ def safe_name(text: str) -> str:
 
 
 def write_atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text)
-    os.replace(tmp, path)
+    """Write ``path`` whole or not at all. The temporary file's name is the writer's own: two
+    writers of one path (grading-pool processes writing the reference file of one instance for two
+    of its repair drafts) must not rename each other's half-written file."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
+    try:
+        tmp.write_text(text)
+        os.replace(tmp, path)
+    finally:
+        tmp.unlink(missing_ok=True)
 
 
 def versions() -> dict[str, str]:
@@ -77,6 +84,8 @@ def save_programs(run_dir: Path, instance: TaskInstance, code: str | None) -> di
     folder = run_dir / "programs" / instance.slug
     folder.mkdir(parents=True, exist_ok=True)
     stem = f"seed{instance.seed}" + (f"_for_{safe_name(instance.origin)}" if instance.origin else "")
+    if instance.draft is not None:  # a repair task: each draft of the instance has its own answer
+        stem += f"_draft_{safe_name(instance.draft.id)}"
     reference = folder / f"{stem}_reference.py"
     write_atomic(reference, instance.reference_program)
     files = {"reference": str(reference.relative_to(run_dir))}
