@@ -126,3 +126,6 @@ def test_rescore_options_give_the_same_verdicts_and_fill_the_store(tmp_path: Pat
     proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r"), "--executor", "cold"],
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2 and "--executor" in proc.stderr
+    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "no-such-run")],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 2 and "no-such-run does not exist" in proc.stderr

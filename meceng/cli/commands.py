@@ -233,6 +233,9 @@ def cmd_view(args: argparse.Namespace) -> int:
 def cmd_rescore(args: argparse.Namespace) -> int:
     from meceng.pipeline import rescore
 
+    if not args.run_dir.exists():
+        print(f"error: {args.run_dir} does not exist (a run's folder or its run.json)", file=sys.stderr)
+        return 2
     run_dir: Path = args.run_dir if args.run_dir.is_dir() else args.run_dir.parent
     if not (run_dir / "run.json").exists():
         print(f"error: {run_dir} holds no run.json", file=sys.stderr)
