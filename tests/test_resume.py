@@ -114,7 +114,8 @@ def test_rescore_options_give_the_same_verdicts_and_fill_the_store(tmp_path: Pat
     run_json.write_text(json.dumps(run))
     store = tmp_path / "references"
     verdicts = []
-    for options in (["--executor", "subprocess", "--workers", "1"], ["--store", str(store)], ["--store", str(store)]):
+    stored = ["--reference-store", str(store)]
+    for options in (["--executor", "subprocess", "--workers", "1"], stored, stored):
         proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r"), *options],
                               capture_output=True, text=True, timeout=300)
         assert proc.returncode == 0, proc.stderr

@@ -113,7 +113,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="programs run and graded at once (default: the machine's cores)")
     p.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                    help="fork: children of a warm fork server (default); subprocess: a cold interpreter each")
-    p.add_argument("--store", type=Path, default=None,
+    p.add_argument("--reference-store", dest="store", type=Path, default=None,
                    help="a reference store (a sweep's references/ folder): ground truths made once are reused")
     p.set_defaults(func=cmd_rescore)
 
