@@ -28,8 +28,9 @@ def live_display_enabled() -> bool:
 
 
 @contextmanager
-def progress_bar(total: int, title: str, enabled: bool = True) -> Iterator[Advance]:
-    """Yields ``advance(success, tokens)`` to call once per finished task."""
+def progress_bar(total: int, title: str, enabled: bool = True, tokens: bool = True) -> Iterator[Advance]:
+    """Yields ``advance(success, tokens)`` to call once per finished task (``tokens=False``: no
+    tokens/s column, for work that calls no LLM such as a rescore)."""
     if not enabled or not live_display_enabled():
         yield lambda success, tokens=0: None
         return
@@ -38,7 +39,7 @@ def progress_bar(total: int, title: str, enabled: bool = True) -> Iterator[Advan
     t0 = time.perf_counter()
     with Progress(
         TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
-        TextColumn("ok {task.fields[passed]}"), TextColumn("{task.fields[rate]} tok/s"),
+        TextColumn("ok {task.fields[passed]}"), *([TextColumn("{task.fields[rate]} tok/s")] if tokens else []),
         TimeElapsedColumn(), TextColumn("eta"), TimeRemainingColumn(), transient=False,
     ) as progress:
         task = progress.add_task(title, total=total, passed=0, rate="0")

@@ -115,7 +115,7 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
         return regraded
 
     try:
-        with progress_bar(len(run["tasks"]), f"rescore {run_dir.name}", enabled=progress) as advance:
+        with progress_bar(len(run["tasks"]), f"rescore {run_dir.name}", enabled=progress, tokens=False) as advance:
             run["tasks"] = list(await asyncio.gather(*(counted(r, advance) for r in run["tasks"])))
     finally:
         if pool is not None:
