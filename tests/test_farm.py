@@ -122,8 +122,11 @@ def start_sweep(out: Path) -> subprocess.Popen[str]:
     # finished a 24-task sweep (0.4 s) before the kill reached it, twice
     args = ["--model", "gold", "--only", "1,2,3,4,9,11", "--variations", "12", "--select-template", "CI1",
             "--select-template", "CI2", "--out", str(out), "--no-progress"]
+    # Ctrl-C's default action in the sweep even when this session ignores SIGINT (a CI script started
+    # with '&' does, and Python then installs no KeyboardInterrupt handler: the SIGINT stage was lost)
     return subprocess.Popen([sys.executable, str(ROOT / "scripts" / "sweep.py"), *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
 def lines(folder: Path) -> int:
