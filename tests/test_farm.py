@@ -118,8 +118,7 @@ async def test_verdicts_equal_with_and_without_store_and_concurrency(tmp_path: P
 
 
 def start_sweep(out: Path) -> subprocess.Popen[str]:
-    # 144 tasks, ~2.5 s of grading after ~2 s of start-up: a loaded machine (CI beside other work)
-    # finished a 24-task sweep (0.4 s) before the kill reached it, twice
+    # 144 tasks, ~2.5 s of grading after ~2 s of start-up: both signals land well inside the sweep
     args = ["--model", "gold", "--only", "1,2,3,4,9,11", "--variations", "12", "--select-template", "CI1",
             "--select-template", "CI2", "--out", str(out), "--no-progress"]
     # Ctrl-C's default action in the sweep even when this session ignores SIGINT (a CI script started
