@@ -72,12 +72,17 @@ def test_existing_run_folder_is_not_overwritten(tmp_path: Path) -> None:
     assert "--resume" in (again.stderr.read() if again.stderr else "")
 
 
-def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
+def gold_run(out: Path) -> Path:
+    """A gold run of tasks 3 and 11 in ``out / "r"``, made through the command line; its run.json."""
     proc = subprocess.run([sys.executable, "-m", "meceng.cli", "run", "--model", "gold", "--only", "3,11",
-                           "--variations", "1", "--out", str(tmp_path), "--name", "r", "--no-progress"],
+                           "--variations", "1", "--out", str(out), "--name", "r", "--no-progress"],
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
-    run_json = tmp_path / "r" / "run.json"
+    return out / "r" / "run.json"
+
+
+def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
+    run_json = gold_run(tmp_path)
     run = json.loads(run_json.read_text())
     traces = tmp_path / "r" / run["tasks"][0]["files"]["traces"]
     with np.load(traces) as data:
@@ -103,11 +108,7 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
 def test_rescore_options_give_the_same_verdicts_and_fill_the_store(tmp_path: Path) -> None:
     """Cold interpreters and the fork server grade alike; a store given to rescore is filled with
     the ground truths and used by the next rescore; a wrong option is refused with exit 2."""
-    proc = subprocess.run([sys.executable, "-m", "meceng.cli", "run", "--model", "gold", "--only", "3,11",
-                           "--variations", "1", "--out", str(tmp_path), "--name", "r", "--no-progress"],
-                          capture_output=True, text=True, timeout=300)
-    assert proc.returncode == 0, proc.stderr
-    run_json = tmp_path / "r" / "run.json"
+    run_json = gold_run(tmp_path)
     run = json.loads(run_json.read_text())
     record = run["tasks"][0]
     record["generation"]["code"] = record["generation"]["code"].replace("mbs.Assemble()", "raise ValueError('x')")

@@ -172,8 +172,8 @@ async def execute(
     With a ``pool`` the child is forked from the warm fork server, otherwise a cold interpreter
     is started; both get the same isolation. ``files`` are put into the program's working
     directory under the given names (the saved parts an assembly loads). ``slots`` bound the
-    children alive at once; one is held only while the child lives, so writing the job and reading
-    the results (parent work) overlap with the next child's run instead of leaving a core idle.
+    children alive at once: a slot is held only while the child lives (writing the job and reading
+    the results are the parent's work, not a worker's).
     """
     limits = limits or ExecutionLimits()
     # the static check (``check``) runs in the child, before the program: see runner._refused
