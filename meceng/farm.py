@@ -31,8 +31,8 @@ from typing import Any
 
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
-from meceng.agents.llm import make_backend
-from meceng.agents.scheduler import EndpointBackend, PrioritySlots
+from meceng.llm.factory import make_backend
+from meceng.llm.scheduler import EndpointBackend, PrioritySlots
 from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.pipeline.grading import grading_pool

@@ -19,17 +19,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 from meceng.eval.categories import CATEGORIES
+from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.report import (
     FLEXIBLE_COLUMNS,
     RIGID_COLUMNS,
-    Rate,
-    Run,
     component_series,
     difficulty,
     error_category_table,
     flexible_table,
     flexible_timing_table,
-    load_runs,
     repair_table,
     series,
     stage_table,

@@ -27,8 +27,8 @@ from typing import Any
 
 import httpx
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
+from meceng.llm.types import LLMSettings
 from meceng.tasks import default_registry
 
 BASE_CTX = 4096

@@ -45,16 +45,17 @@ import bench_real_server
 import bench_scale
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.backend_ollama import OllamaBackend
-from meceng.agents.catalog import rigid_catalog
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.steps import choose_components, generate_code
+from meceng.catalog.catalogs import rigid_catalog
 from meceng.eval.chain import Tolerances
+from meceng.llm.backend_ollama import OllamaBackend
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import Evaluator, RunSettings, run_benchmark
 from meceng.pipeline.grading import GradingPool
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, child_env, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import child_env, execute
 from meceng.tools.warm import WarmPool
 
 FIRST_TWELVE = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")

@@ -32,9 +32,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from fake_ollama import FakeOllama, chat_reply, prompted_instance
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.farm import SweepJob, run_sweep
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, rescore, run_benchmark
 from meceng.tasks.registry import default_registry
 

@@ -23,13 +23,14 @@ import sys
 import time
 from pathlib import Path
 
-from meceng.agents.catalog import rigid_catalog
 from meceng.agents.inspect.scene import build_scene
 from meceng.agents.inspect.snapshot import draw
 from meceng.agents.inspect.view import build_view
 from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import rigid_catalog
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 from meceng.viewer.systems import system_pictures
 
 TASKS = ("grid_mesh_and_large_sphere_impact", "non_steerable_four_wheeled_car",

@@ -31,10 +31,11 @@ sys.path.insert(0, str(HERE))
 from bench_scale import FakeServer  # noqa: E402
 from llama_server import SERVED_NAME, LlamaServer, servers_missing, write_tiny_llama  # noqa: E402
 
-from meceng.agents.backend_openai import OpenAIBackend  # noqa: E402
-from meceng.agents.catalog import rigid_catalog  # noqa: E402
-from meceng.agents.llm import ChatRequest, LLMSettings, user_messages  # noqa: E402
 from meceng.agents.prompts import DEFAULT_SELECT, select_prompt  # noqa: E402
+from meceng.catalog.catalogs import rigid_catalog  # noqa: E402
+from meceng.llm.backend_openai import OpenAIBackend  # noqa: E402
+from meceng.llm.messages import user_messages  # noqa: E402
+from meceng.llm.types import ChatRequest, LLMSettings  # noqa: E402
 from meceng.tasks.registry import default_registry  # noqa: E402
 
 

@@ -26,13 +26,16 @@ import time
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.catalog import rigid_catalog
-from meceng.agents.llm import ChatRequest, LLMSettings, make_backend, user_messages
 from meceng.agents.steps import choose_components, generate_code
+from meceng.catalog.catalogs import rigid_catalog
 from meceng.eval.chain import Tolerances
+from meceng.llm.factory import make_backend
+from meceng.llm.messages import user_messages
+from meceng.llm.types import ChatRequest, LLMSettings
 from meceng.pipeline import Evaluator, RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, child_env
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
 HERE = Path(__file__).resolve().parent

@@ -29,10 +29,10 @@ from typing import Any
 from rich.console import Console
 from rich.table import Table
 
-from meceng.agents.llm import DEFAULT_HOSTS
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.cli.arguments import parse_only
 from meceng.farm import SweepJob, run_sweep
+from meceng.llm.types import DEFAULT_HOSTS
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
 from meceng.shard import Shard, pick

@@ -9,7 +9,8 @@ import exudyn as exu
 import numpy as np
 
 from meceng.tasks.base import TaskInstance
-from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.executor import execute
 
 
 async def saved_parts(instance: TaskInstance, folder: Path) -> dict[str, Path]:

@@ -9,11 +9,11 @@ from pathlib import Path
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.catalog import part_catalog, rigid_catalog
 from meceng.agents.inspect.answer import num
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import part_catalog, rigid_catalog
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 
@@ -125,7 +125,7 @@ async def test_self_check_reports_the_agents_program() -> None:
 async def test_agent_through_the_openai_compatible_backend(tmp_path: Path) -> None:
     from fake_ollama import openai_reply
 
-    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.llm.backend_openai import OpenAIBackend
 
     instance = default_registry().get(SLUG).instance(0)
 
@@ -238,7 +238,7 @@ async def test_a_conversation_over_the_servers_context(tmp_path: Path, refused_r
     context, like the token budget; the program it had is graded."""
     from fake_ollama import openai_reply
 
-    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.llm.backend_openai import OpenAIBackend
 
     instance = default_registry().get(SLUG).instance(0)
     overflow = {"error": {"message": "This model's maximum context length is 4096 tokens. However, you requested "

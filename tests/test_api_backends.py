@@ -18,20 +18,12 @@ import pytest
 from fake_anthropic import FakeAnthropic, anthropic_error, anthropic_problem, anthropic_reply
 from fake_ollama import FakeOllama, chat_reply, ollama_problem, openai_problem, openai_reply
 
-from meceng.agents.backend_anthropic import AnthropicBackend, thinking_budget
-from meceng.agents.backend_ollama import OllamaBackend
-from meceng.agents.backend_openai import OpenAIBackend
-from meceng.agents.llm import (
-    ChatRequest,
-    ChatResponse,
-    LLMError,
-    LLMSettings,
-    ToolCall,
-    assistant_message,
-    tool_message,
-    user_messages,
-)
 from meceng.agents.prompts import gold_code, gold_selection
+from meceng.llm.backend_anthropic import AnthropicBackend, thinking_budget
+from meceng.llm.backend_ollama import OllamaBackend
+from meceng.llm.backend_openai import OpenAIBackend
+from meceng.llm.messages import assistant_message, tool_message, user_messages
+from meceng.llm.types import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 
@@ -110,7 +102,7 @@ async def test_anthropic_wrong_key_is_an_infrastructure_error_not_retried() -> N
 
 
 def test_anthropic_without_key_says_which_variable(monkeypatch: pytest.MonkeyPatch) -> None:
-    from meceng.agents.llm import make_backend
+    from meceng.llm.factory import make_backend
 
     monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     with pytest.raises(ValueError, match="ANTHROPIC_API_KEY"):
@@ -169,7 +161,7 @@ async def test_anthropic_agent_loop_with_tool_use_and_thinking(tmp_path: Path,
 
 
 async def test_openai_api_defaults_and_reasoning_tokens(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    from meceng.agents.llm import make_backend
+    from meceng.llm.factory import make_backend
 
     monkeypatch.setenv("OPENAI_API_KEY", "sk-openai-test")
     known = instances(("single_pendulum",))
@@ -509,7 +501,7 @@ def test_cli_without_key_says_so_and_writes_nothing(tmp_path: Path) -> None:
     ("http://127.0.0.1:8000/v1", {"max_tokens", "max_completion_tokens"}),
 ])
 def test_answer_limit_fields_per_server(host: str, fields: set[str]) -> None:
-    from meceng.agents.backend_openai import answer_limit_fields
+    from meceng.llm.backend_openai import answer_limit_fields
 
     sent = answer_limit_fields(host, 2048)
     assert set(sent) == fields and set(sent.values()) == {2048}
@@ -533,7 +525,7 @@ OVERFLOW_BODIES = [  # (body as each server words it, prompt tokens, context)
 
 @pytest.mark.parametrize(("body", "prompt", "context"), OVERFLOW_BODIES)
 def test_context_overflow_is_read_from_each_servers_words(body: dict[str, Any], prompt: int, context: int) -> None:
-    from meceng.agents.backend_openai import context_exceeded
+    from meceng.llm.backend_openai import context_exceeded
 
     overflow = context_exceeded(400, json.dumps(body), "http://h/v1", 2048)
     assert overflow is not None and not overflow.transient
@@ -542,7 +534,7 @@ def test_context_overflow_is_read_from_each_servers_words(body: dict[str, Any], 
 
 
 def test_other_refusals_are_not_context_overflows() -> None:
-    from meceng.agents.backend_openai import context_exceeded
+    from meceng.llm.backend_openai import context_exceeded
 
     unsupported = {"error": {"message": "Unsupported value: 'temperature'", "type": "invalid_request_error"}}
     assert context_exceeded(400, json.dumps(unsupported), "h", 64) is None
@@ -554,8 +546,8 @@ async def test_prompt_over_the_context_is_said_once_kept_by_resume_and_graded_on
     """A 400 context_length_exceeded is asked once, recorded with its numbers and left out of the
     rates; a plain --resume keeps it (the same server would refuse it again), a resume on a server
     the user names (--host) asks again and grades it."""
-    from meceng.agents.backend_openai import OpenAIBackend
     from meceng.cli.commands import print_summary
+    from meceng.llm.backend_openai import OpenAIBackend
 
     known = instances(("single_mass_oscillator", "single_pendulum"))
     pendulum_text = next(d for d, i in known.items() if i.slug == "single_pendulum")

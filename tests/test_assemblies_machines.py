@@ -28,7 +28,7 @@ from exudyn.utilities import SensorNode, SensorObject
 from meceng.eval.chain import evaluate_rigid
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 
 TURBINE, BENCH = "simplified_wind_turbine", "grinding_bench"
 #: (fixed part's slot, rotating part's slot) per assembly

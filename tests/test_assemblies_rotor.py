@@ -28,7 +28,7 @@ from scipy.integrate import solve_ivp
 from meceng.eval.chain import evaluate_rigid
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 
 ONE_BLOCK = ("rotor_in_bearing_block", "rotor_in_bearing_block_with_pedestal")
 TWO_BLOCKS = "rotor_in_two_bearing_blocks_with_pedestal"

@@ -22,7 +22,7 @@ from exudyn.utilities import SensorMarker
 from meceng.eval.chain import evaluate_rigid
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 
 SIMPLE, ADVANCED = "flexible_slider_crank_simple", "flexible_slider_crank_advanced"
 SLUGS = (SIMPLE, ADVANCED)

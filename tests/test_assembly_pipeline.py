@@ -11,9 +11,10 @@ import numpy as np
 import pytest
 from assemblies import build, run_assembly, saved_parts
 
-from meceng.agents.llm import ChatRequest, ChatResponse, GoldBackend
 from meceng.agents.prompts import gold_code
 from meceng.eval.chain import evaluate_rigid
+from meceng.llm.backend_gold import GoldBackend
+from meceng.llm.types import ChatRequest, ChatResponse
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 

@@ -21,7 +21,8 @@ import exudyn.utilities as exu_utilities
 import pytest
 from exudyn_api import MAIN_SYSTEM, call_problems, calls, deprecated_arguments
 
-from meceng.agents.catalog import Catalog, rigid_catalog
+from meceng.catalog.catalogs import rigid_catalog
+from meceng.catalog.component import Catalog
 from meceng.tasks.base import PREAMBLE
 
 EXPECTED_NAMES = (

@@ -166,8 +166,8 @@ def test_registry_refuses_unknown_keys_with_close_matches() -> None:
 
 
 def test_tasks_prompt_prints_what_the_pipeline_sends() -> None:
-    from meceng.agents.catalog import rigid_catalog
     from meceng.agents.prompts import code_prompt, select_prompt
+    from meceng.catalog.catalogs import rigid_catalog
 
     instance = default_registry().get("newtons_cradle").instance(2)
     prompts = json.loads(meceng("tasks", "prompt", "newtons_cradle", "--seed", "2", "--select-template", "CI3",

@@ -26,12 +26,12 @@ from typing import Any
 import pytest
 from fake_ollama import FakeOllama, chat_reply, prompted_instance
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.chain import RIGID_STAGES
 from meceng.eval.parts import PART_STAGES
 from meceng.eval.topology import CAUSES
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.pipeline.rescore import evaluate_program
 from meceng.tasks.base import TaskInstance

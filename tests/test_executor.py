@@ -9,7 +9,8 @@ from pathlib import Path
 import pytest
 
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 HEAD = "import exudyn as exu\nfrom exudyn.utilities import *\nSC = exu.SystemContainer()\nmbs = SC.AddSystem()\n"
 MODEL = "o = mbs.CreateMassPoint(referencePosition=[0,0,0], mass=1, gravity=[0,0,-9.81])\n"
@@ -155,7 +156,8 @@ def test_reading_a_trajectory_waits_for_the_parse_lock(tmp_path: Path) -> None:
     import numpy as np
 
     from meceng import syntax
-    from meceng.tools.executor import ExecutionLimits, _collect
+    from meceng.tools.execution import ExecutionLimits
+    from meceng.tools.executor import _collect
 
     token = "t0k3n"
     (tmp_path / f"result-{token}.json").write_text(json_module.dumps({"stage": "solved", "error": None}))

@@ -16,9 +16,9 @@ from typing import Any
 from fake_ollama import FakeOllama, chat_reply, prompted_instance
 from records import normalized
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.farm import SweepJob, run_sweep, server_groups
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks import default_registry
 

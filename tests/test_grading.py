@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from records import normalized
 
-from meceng.agents.llm import LLMSettings
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, rescore, run_benchmark
 from meceng.tasks import default_registry
 from meceng.tools.executor import execute

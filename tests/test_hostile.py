@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from meceng.tools.executor import ExecutionLimits, child_env, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import child_env, execute
 from meceng.tools.warm import WarmPool
 
 MODEL = """

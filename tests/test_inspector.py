@@ -17,16 +17,17 @@ import numpy as np
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.catalog import rigid_catalog
 from meceng.agents.inspect.answer import num
 from meceng.agents.inspect.scene import box_half_sizes
 from meceng.agents.inspect.view import build_view
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import rigid_catalog
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 ROBOT = "rrr_articulated_robot_with_3d_cubic_trajectory"
 PLACED = "referencePosition=[length2 + 0.5 * length3, 0, length1]"
@@ -192,7 +193,7 @@ async def test_bad_tool_arguments_are_answered_not_raised() -> None:
 
 
 async def test_the_part_snapshot_shows_the_agents_part_and_its_interfaces() -> None:
-    from meceng.agents.catalog import part_catalog
+    from meceng.catalog.catalogs import part_catalog
 
     part = default_registry().get("flexible_beam_part").instance(0)
     other = re.sub(r"^beam_length = .*$", "beam_length = 0.3", part.reference_program, flags=re.M)

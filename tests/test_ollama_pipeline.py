@@ -13,9 +13,10 @@ from pathlib import Path
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.backend_ollama import OllamaBackend
-from meceng.agents.llm import ChatRequest, LLMSettings, user_messages
 from meceng.agents.prompts import gold_code, gold_selection
+from meceng.llm.backend_ollama import OllamaBackend
+from meceng.llm.messages import user_messages
+from meceng.llm.types import ChatRequest, LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 
@@ -129,7 +130,7 @@ async def test_transient_errors_are_retried_and_permanent_ones_are_not() -> None
 
     async with FakeOllama(unknown_model) as server:
         backend = OllamaBackend(LLMSettings(model="nope", backend="ollama", hosts=(server.url,), backoff_s=0.01))
-        from meceng.agents.llm import LLMError
+        from meceng.llm.types import LLMError
 
         with pytest.raises(LLMError) as info:
             await backend.chat(request)
@@ -217,8 +218,8 @@ async def test_flaky_server_loses_no_task(tmp_path: Path) -> None:
 
 
 async def test_full_context_and_thinking_are_recorded() -> None:
-    from meceng.agents.catalog import rigid_catalog
     from meceng.agents.steps import choose_components
+    from meceng.catalog.catalogs import rigid_catalog
 
     instance = default_registry().get("single_pendulum").instance(0)
 

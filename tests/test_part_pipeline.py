@@ -8,8 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from meceng.agents.llm import ChatRequest, ChatResponse, GoldBackend
 from meceng.agents.prompts import gold_code
+from meceng.llm.backend_gold import GoldBackend
+from meceng.llm.types import ChatRequest, ChatResponse
 from meceng.pipeline import RunSettings, evaluate_program, run_benchmark
 from meceng.tasks.registry import default_registry
 

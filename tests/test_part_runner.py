@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from meceng.eval.parts import PartData, evaluate_part
-from meceng.tools.executor import ExecutionLimits, child_env, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import child_env, execute
 from meceng.tools.warm import WarmPool
 
 BEAM = """

@@ -18,7 +18,8 @@ import pytest
 
 from meceng.tasks.part_base import PartModel
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 REGISTRY = default_registry()
 BEAMS = (54, 55, 56, 57)

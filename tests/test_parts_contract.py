@@ -6,9 +6,9 @@ import re
 
 import pytest
 
-from meceng.agents.catalog import part_catalog
-from meceng.agents.components_part import FEM, GEOMETRY
 from meceng.agents.prompts import code_prompt, select_prompt
+from meceng.catalog.catalogs import part_catalog
+from meceng.catalog.part import FEM, GEOMETRY
 from meceng.tasks.base import slugify
 from meceng.tasks.part_base import PART_PREAMBLE, PartModel
 from meceng.tasks.registry import default_registry

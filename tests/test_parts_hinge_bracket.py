@@ -14,7 +14,8 @@ from netgen.occ import Cylinder, Pnt, Z
 from partgeometry import build
 
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 GAP, PIN, BRACKET = 63, 64, 65
 PARTS = (GAP, PIN, BRACKET)

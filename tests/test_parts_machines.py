@@ -20,7 +20,8 @@ import pytest
 
 from meceng.tasks.part_base import PartModel
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 PART_IDS = (59, 60, 61, 62)
 REL = 1e-6  # OCC volumes and areas of boxes/cylinders are exact up to round-off

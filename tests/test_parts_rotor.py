@@ -25,7 +25,8 @@ from meceng.tasks.parts import (
 )
 from meceng.tasks.parts.masters_rotor import ROTOR_MASTERS
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 PI = math.pi
 Box3 = tuple[tuple[float, float, float], tuple[float, float, float]]

@@ -15,7 +15,8 @@ from partgeometry import build
 from scipy.integrate import quad
 
 from meceng.tasks.registry import default_registry
-from meceng.tools.executor import ExecutionLimits, execute
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
 
 CRANK, ROD, SLIDER, CRANK_ADV, ROD_ADV, SLIDER_ADV = 67, 68, 69, 70, 71, 72
 PARTS = (CRANK, ROD, SLIDER, CRANK_ADV, ROD_ADV, SLIDER_ADV)

@@ -40,7 +40,7 @@ import re
 
 import pytest
 
-from meceng.agents.catalog import assembly_catalog, rigid_catalog
+from meceng.catalog.catalogs import assembly_catalog, rigid_catalog
 from meceng.eval.components import check_components
 from meceng.pipeline import evaluate_program
 from meceng.tasks.base import TaskInstance

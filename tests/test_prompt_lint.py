@@ -39,11 +39,12 @@ import pytest
 from exudyn.FEM import FEMinterface
 from exudyn_api import MAIN_SYSTEM, call_problems, parameters
 
-from meceng.agents.catalog import Catalog, assembly_catalog, catalog_for, part_catalog, rigid_catalog
-from meceng.agents.components_flexible import BEAM_PART
-from meceng.agents.components_flexible import COMPONENTS as FLEXIBLE
-from meceng.agents.components_part import FEM
 from meceng.agents.prompts import CODE_TEMPLATES, SELECT_TEMPLATES
+from meceng.catalog.catalogs import assembly_catalog, catalog_for, part_catalog, rigid_catalog
+from meceng.catalog.component import Catalog
+from meceng.catalog.flexible import BEAM_PART
+from meceng.catalog.flexible import COMPONENTS as FLEXIBLE
+from meceng.catalog.part import FEM
 from meceng.pipeline import RenderedPrompt, RunSettings, instance_prompts
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import default_registry

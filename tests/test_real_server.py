@@ -29,9 +29,10 @@ import pytest
 from llama_server import SERVED_NAME, LlamaServer, servers_missing, write_tiny_llama
 from records import normalized
 
-from meceng.agents.backend_openai import OpenAIBackend
-from meceng.agents.llm import ChatRequest, ContextExceeded, LLMSettings, user_messages
-from meceng.agents.scheduler import Endpoint
+from meceng.llm.backend_openai import OpenAIBackend
+from meceng.llm.messages import user_messages
+from meceng.llm.scheduler import Endpoint
+from meceng.llm.types import ChatRequest, ContextExceeded, LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 
 MISSING = servers_missing()

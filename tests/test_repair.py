@@ -18,9 +18,9 @@ from pathlib import Path
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code
 from meceng.eval.categories import CATEGORIES
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.drafts import PART_EXPECTED, candidate_drafts
 from meceng.tasks.registry import default_registry
@@ -161,7 +161,7 @@ async def test_drafts_fail_and_the_grader_names_their_label(levels: tuple[str, .
     from meceng.eval.chain import Tolerances
     from meceng.pipeline.drafts import grade_drafts
     from meceng.pipeline.evaluation import Evaluator
-    from meceng.tools.executor import ExecutionLimits
+    from meceng.tools.execution import ExecutionLimits
 
     evaluator = Evaluator(2, ExecutionLimits(), Tolerances())
     failing, agreeing, mismatches = 0, 0, []
@@ -199,7 +199,7 @@ async def test_a_draft_the_harness_cannot_grade_is_left_out_not_fatal(monkeypatc
     from meceng.eval.chain import Tolerances
     from meceng.pipeline import drafts as module
     from meceng.pipeline.evaluation import Evaluator
-    from meceng.tools.executor import ExecutionLimits
+    from meceng.tools.execution import ExecutionLimits
 
     evaluator = Evaluator(2, ExecutionLimits(), Tolerances())
     original = evaluator.evaluate

@@ -12,9 +12,9 @@ from pathlib import Path
 
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
-from meceng.eval.report import wilson
+from meceng.eval.rates import wilson
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 
@@ -100,7 +100,8 @@ async def test_report_numbers_match_run_records(tmp_path: Path) -> None:
 def test_level3_tables_count_parts_and_assemblies_apart(tmp_path) -> None:
     import json as _json
 
-    from meceng.eval.report import flexible_table, flexible_timing_table, load_runs
+    from meceng.eval.rates import load_runs
+    from meceng.eval.report import flexible_table, flexible_timing_table
 
     def part(ok: bool, origin: str) -> dict:
         return {"level": "3a", "slug": "p", "seed": 0, "origin": origin, "overall": ok, "first_failure": None,
@@ -137,7 +138,8 @@ def test_rigid_tables_count_levels_1_and_2_only(tmp_path) -> None:
     """Tables 4 and 5 and Figures 8-10 are about levels 1-2: a part has no component-selection
     stage of that name and must not count as a failed selection; a flexible-only run has no such
     sections at all."""
-    from meceng.eval.report import component_series, error_category_table, load_runs, series, thinking_table
+    from meceng.eval.rates import load_runs
+    from meceng.eval.report import component_series, error_category_table, series, thinking_table
     from meceng.report import build_report
 
     rigid = {"level": "1", "slug": "r", "seed": 0, "overall": True, "first_failure": None,
@@ -161,7 +163,7 @@ def test_rigid_tables_count_levels_1_and_2_only(tmp_path) -> None:
 
 
 def test_wilson_interval_holds_the_rate_at_the_ends() -> None:
-    from meceng.eval.report import Rate
+    from meceng.eval.rates import Rate
 
     for n in range(1, 60):  # n = 3, 6, 7 at 0 % and 10, 13 at 100 % round past the rate
         for passed in (0, n):

@@ -6,9 +6,10 @@ import asyncio
 
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.backend_ollama import OllamaBackend
-from meceng.agents.llm import ChatRequest, LLMSettings, user_messages
-from meceng.agents.scheduler import PrioritySlots
+from meceng.llm.backend_ollama import OllamaBackend
+from meceng.llm.messages import user_messages
+from meceng.llm.scheduler import PrioritySlots
+from meceng.llm.types import ChatRequest, LLMSettings
 
 
 async def test_priority_slots_serve_code_before_selection() -> None:
@@ -71,8 +72,8 @@ async def test_openai_compatible_backend(tmp_path) -> None:
 
     from fake_ollama import openai_reply
 
-    from meceng.agents.backend_openai import OpenAIBackend
     from meceng.agents.prompts import gold_code, gold_selection
+    from meceng.llm.backend_openai import OpenAIBackend
     from meceng.pipeline import RunSettings, run_benchmark
     from meceng.tasks.registry import default_registry
 
@@ -110,7 +111,7 @@ async def test_a_silent_server_ends_the_run_without_waiting_out_every_request(tm
     every task lost after a couple of timeouts instead of one timeout per request and attempt."""
     import json
 
-    from meceng.agents.backend_openai import OpenAIBackend
+    from meceng.llm.backend_openai import OpenAIBackend
     from meceng.pipeline import RunSettings, run_benchmark
 
     release = asyncio.Event()

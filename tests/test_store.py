@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from meceng.pipeline.store import ReferenceStore, reference_key
-from meceng.tools.executor import Execution, ExecutionLimits
+from meceng.tools.execution import Execution, ExecutionLimits
 
 
 def execution(value: float = 1.0, error: str | None = None) -> Execution:

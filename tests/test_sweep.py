@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from meceng.agents.llm import LLMSettings
+from meceng.llm.types import LLMSettings
 from meceng.shard import Shard, split
 from meceng.sweep import GridPoint, ModelSpec, load_spec, plan, point_workload, study_points, unique_points
 

@@ -67,7 +67,7 @@ def test_parameters_stay_in_their_ranges() -> None:
 
 
 def test_required_components_exist_in_catalog() -> None:
-    from meceng.agents.catalog import assembly_catalog, part_catalog, rigid_catalog
+    from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
 
     catalogs = {"1": rigid_catalog(), "2": rigid_catalog(), "3a": part_catalog(), "3b": assembly_catalog()}
     for model in default_registry():

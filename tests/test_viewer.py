@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from meceng.pipeline.traces import MAX_POINTS, decimate_surface, load_traces, save_traces, traces_path
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 from meceng.viewer.data import data_script, find_runs, index_data, load_run
 from meceng.viewer.diff import side_by_side
 from meceng.viewer.site import build_site

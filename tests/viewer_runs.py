@@ -11,8 +11,8 @@ from typing import Any
 
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import gold_code, gold_selection
+from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry
 

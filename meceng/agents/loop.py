@@ -13,12 +13,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, ContextExceeded, LLMError, assistant_message, tool_message
 from meceng.agents.parsing import extract_code
 from meceng.agents.prompts import DEFAULT_CODE, gold_code
 from meceng.agents.steps import Selection, generation_prompt
 from meceng.agents.toolbox import Toolbox
+from meceng.catalog.component import Catalog
+from meceng.llm.messages import assistant_message, tool_message
+from meceng.llm.types import Backend, ChatRequest, ContextExceeded, LLMError
 from meceng.tasks.base import TaskInstance
 
 AGENT_NOTE = """

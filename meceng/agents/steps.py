@@ -10,10 +10,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from meceng.agents.catalog import Catalog
-from meceng.agents.llm import Backend, ChatRequest, ChatResponse, ContextExceeded, LLMError, user_messages
 from meceng.agents.parsing import extract_code, parse_components
 from meceng.agents.prompts import code_prompt, gold_code, gold_selection, select_prompt
+from meceng.catalog.component import Catalog
+from meceng.llm.messages import user_messages
+from meceng.llm.types import Backend, ChatRequest, ChatResponse, ContextExceeded, LLMError
 from meceng.tasks.base import TaskInstance
 
 

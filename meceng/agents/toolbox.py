@@ -17,125 +17,19 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.catalog import Catalog
+from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.inspect import snapshot as pictures
 from meceng.agents.inspect.answer import QUANTITIES, Ask, render
 from meceng.agents.inspect.view import build_view
+from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
+from meceng.catalog.component import Catalog
 from meceng.tasks.base import SimSettings, TaskInstance
-from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 
-_CODE = {"type": "string", "description": "the complete program, as you would answer it"}
-
-TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
-    {
-        "name": "simulate",
-        "description": ("Run a complete Exudyn program and report what it built and how it moved, in the "
-                        "description's terms (global frame, SI units, the catalog's component names): every body "
-                        "with mass, centre of mass, principal inertia, initial position, angles and velocities; "
-                        "every connector with the bodies it joins, where, its free and locked directions, its "
-                        "parameters; every load with its vector; then the bodies' states at a few times and the "
-                        "range of every coordinate over the run. Long lists are cut and say how to ask for more."),
-        "parameters": {"type": "object", "properties": {
-            "code": _CODE,
-            "bodies": {"type": "array", "items": {"type": "integer"},
-                       "description": "object numbers (#n) of the bodies to show in full, with their connectors"},
-            "times": {"type": "array", "items": {"type": "number"},
-                      "description": "times (s) at which to report the states (default: half the end time "
-                                     "and the end time; at most eight)"},
-            "quantities": {"type": "array", "items": {"type": "string", "enum": list(QUANTITIES)},
-                           "description": "which states to report (default: all)"}},
-            "required": ["code"]},
-    },
-    {
-        "name": "snapshot",
-        "description": ("Draw the program's system at t = 0 and at a later time (default: the end time): "
-                        "rigid bodies as inertia-equivalent boxes, mass points as dots, ground, joints with their "
-                        "axes, springs and constraints as lines, contacts, forces as arrows; three orthogonal views "
-                        "and an isometric one."),
-        "parameters": {"type": "object", "properties": {
-            "code": _CODE, "time": {"type": "number", "description": "the second picture's time in s"}},
-            "required": ["code"]},
-    },
-    {
-        "name": "self_check",
-        "description": ("Check a program for problems that need no reference solution: errors, redundant "
-                        "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
-                        "Returns the degrees of freedom and a list of findings."),
-        "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
-    },
-    {
-        "name": "list_components",
-        "description": "The catalog of simulation components with one line each.",
-        "parameters": {"type": "object", "properties": {}},
-    },
-    {
-        "name": "component_docs",
-        "description": "Documentation and a working example for the named catalog components.",
-        "parameters": {"type": "object", "properties": {"names": {"type": "array", "items": {"type": "string"}}},
-                       "required": ["names"]},
-    },
-)
-
-MESH_PART_SCHEMA: dict[str, Any] = {
-    "name": "mesh_part",
-    "description": ("Build, mesh and reduce a complete part program (as you would answer it) and report what "
-                    "it made: stage, error, volume, mass, bounding box, every interface with its area, centre, mean "
-                    "outward normal and number of faces, the eigenfrequencies of the fixed-interface normal modes "
-                    "of its Hurty-Craig-Bampton reduction, and the number of nodes. The program must hard-code maxh."),
-    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
-}
-
-PART_SNAPSHOT_SCHEMA: dict[str, Any] = {
-    "name": "snapshot",
-    "description": ("Mesh a complete part program and draw the part: three orthogonal views and an isometric one, "
-                    "its interfaces coloured and named."),
-    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
-}
-
-FREQUENCIES_NOTE = ("fixed-interface normal modes of the Hurty-Craig-Bampton reduction (every interface clamped), "
-                    "lowest first, in Hz")
-
 MAX_TEXT = 1500
-ENERGY_MARK = "MECENG_ENERGY "
-
-#: Appended around the solver call by ``self_check``: total mechanical energy at start and end,
-#: from Exudyn's own body kinetic energies and spring potentials plus the potential of gravity and
-#: constant forces. Printed with a marker; it only ever describes the agent's own program.
-ENERGY_CODE = """
-def _meceng_energy(mbs):
-    import json as _json
-    import numpy as _np
-    _out = exu.OutputVariableType
-    energy = 0.0
-    for _i in range(mbs.systemData.NumberOfObjects()):
-        _type = mbs.GetObject(_i)['objectType']
-        try:
-            if _type in ('MassPoint', 'RigidBody', 'MassPoint2D', 'RigidBody2D'):
-                energy += mbs.GetObjectOutputBody(_i, _out.KineticEnergy, localPosition=[0, 0, 0])
-            elif 'SpringDamper' in _type:
-                energy += mbs.GetObjectOutput(_i, _out.PotentialEnergy)
-        except Exception:
-            pass
-    for _j in range(mbs.systemData.NumberOfLoads()):
-        _load = mbs.GetLoad(_j)
-        _marker = mbs.GetMarker(_load['markerNumber'])
-        _body = _marker.get('bodyNumber')
-        if _body is None or _load.get('loadVectorUserFunction', 0) != 0:
-            continue
-        _vector = _np.asarray(_load['loadVector'], dtype=float)
-        if _load['loadType'] == 'MassProportional':
-            _object = mbs.GetObject(_body)
-            _com = list(_object.get('centerOfMass', [0, 0, 0]))
-            _pos = mbs.GetObjectOutputBody(_body, _out.Position, localPosition=_com)
-            energy -= float(_object.get('mass', 0.0)) * float(_np.dot(_vector, _pos))
-        elif _load['loadType'] == 'ForceVector' and not _load.get('bodyFixed', False):
-            _local = list(_marker.get('localPosition', [0, 0, 0]))
-            _pos = mbs.GetObjectOutputBody(_body, _out.Position, localPosition=_local)
-            energy -= float(_np.dot(_vector, _pos))
-    return energy
-"""
 
 
 @dataclass(frozen=True)
@@ -283,7 +177,7 @@ class Toolbox:
     async def self_check(self, code: str) -> dict[str, Any]:
         run = await self._run(code, energy=True)
         findings: list[str] = []
-        energy = _energy(run.stdout_tail)
+        energy = parse_energy(run.stdout_tail)
         if run.error:
             findings.append(f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}")
         if run.system.get("redundantConstraints"):
@@ -307,17 +201,6 @@ class Toolbox:
                                 "note": ("kinetic + spring + gravity/constant-force potential; a system without "
                                          "damping, contact losses or driving loads should keep it nearly constant")}
         return report
-
-
-def _energy(stdout: str) -> tuple[float, float] | None:
-    for line in reversed(stdout.splitlines()):
-        if line.startswith(ENERGY_MARK):
-            try:
-                start, end = json.loads(line[len(ENERGY_MARK):])
-                return float(start), float(end)
-            except (ValueError, TypeError):
-                return None
-    return None
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:

@@ -10,8 +10,8 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from meceng.agents.llm import BACKENDS, DEFAULT_HOSTS, LLMSettings
 from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
+from meceng.llm.types import BACKENDS, DEFAULT_HOSTS, LLMSettings
 
 if TYPE_CHECKING:
     from meceng.pipeline import RunSettings

@@ -81,7 +81,7 @@ def cmd_tasks_prompt(args: argparse.Namespace) -> int:
 
 def cmd_evaluate(args: argparse.Namespace) -> int:
     from meceng.pipeline import evaluate_program
-    from meceng.tools.executor import ExecutionLimits
+    from meceng.tools.execution import ExecutionLimits
 
     instance = _instance(args)
     try:

@@ -15,7 +15,7 @@ from typing import Any
 from meceng.eval.components import check_components
 from meceng.eval.graph import GraphTolerance, compare_graphs
 from meceng.eval.solution import compare_solutions
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 
 RIGID_STAGES = (
     "choose_components",

@@ -64,7 +64,7 @@ def failing(graded: list[GradedDraft]) -> list[GradedDraft]:
 async def drafts_of(instance: TaskInstance) -> list[GradedDraft]:
     """``meceng drafts``: an instance's drafts graded outside a run."""
     from meceng.eval.chain import Tolerances
-    from meceng.tools.executor import ExecutionLimits
+    from meceng.tools.execution import ExecutionLimits
 
     return await grade_drafts(instance, Evaluator(2, ExecutionLimits(), Tolerances()))
 

@@ -18,11 +18,13 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.catalog import Catalog, assembly_catalog, part_catalog, rigid_catalog
+from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
+from meceng.catalog.component import Catalog
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
 from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
-from meceng.tools.executor import Execution, ExecutionLimits, execute
+from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.warm import WarmPool
 

@@ -13,12 +13,12 @@ import time
 from dataclasses import dataclass
 from typing import Any
 
-from meceng.agents.llm import Backend
 from meceng.agents.loop import run_agent
 from meceng.agents.prompts import repair_prompt
 from meceng.agents.steps import choose_components, generate_code, given_selection
 from meceng.agents.toolbox import Toolbox
 from meceng.eval.chain import RIGID_STAGES, StageResult, Verdict
+from meceng.llm.types import Backend
 from meceng.tasks.base import TaskInstance
 
 from .evaluation import Evaluator

@@ -13,10 +13,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-from meceng.agents.catalog import Catalog
+from meceng.catalog.component import Catalog
 from meceng.eval.chain import StageResult, Verdict
 from meceng.tasks.base import TaskInstance
-from meceng.tools.executor import Execution, ExecutionLimits
+from meceng.tools.execution import Execution, ExecutionLimits
 
 from .evaluation import Evaluator
 

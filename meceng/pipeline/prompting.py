@@ -11,9 +11,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from meceng.agents.catalog import catalog_for
 from meceng.agents.loop import agent_prompt
 from meceng.agents.steps import generation_prompt, selection_prompt
+from meceng.catalog.catalogs import catalog_for
 from meceng.tasks.base import TaskInstance
 
 from .settings import RunSettings

@@ -18,7 +18,7 @@ from meceng.agents.steps import Generation, Selection
 from meceng.eval import EVALUATOR_VERSION
 from meceng.eval.chain import Verdict
 from meceng.tasks.base import TaskInstance
-from meceng.tools.executor import Execution
+from meceng.tools.execution import Execution
 
 
 def _instance_fields(instance: TaskInstance) -> dict[str, Any]:

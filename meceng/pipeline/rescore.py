@@ -17,7 +17,8 @@ from meceng.eval.chain import StageResult, Tolerances, Verdict
 from meceng.progress import progress_bar
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import TaskRegistry, default_registry
-from meceng.tools.executor import Execution, ExecutionLimits, child_env
+from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
 from .evaluation import Evaluator

@@ -18,14 +18,16 @@ from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.cache import CachedBackend, ResponseCache
-from meceng.agents.llm import Backend, make_backend
 from meceng.eval.chain import Tolerances
+from meceng.llm.cache import CachedBackend, ResponseCache
+from meceng.llm.factory import make_backend
+from meceng.llm.types import Backend
 from meceng.logs import get_logger
 from meceng.progress import Advance
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import TaskRegistry, default_registry
-from meceng.tools.executor import ExecutionLimits, child_env
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
 from .drafts import repair_instances

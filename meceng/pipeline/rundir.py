@@ -20,8 +20,8 @@ from typing import Any
 
 import structlog
 
-from meceng.agents.cache import read_jsonl
 from meceng.eval.aggregate import summarize
+from meceng.jsonl import read_jsonl
 from meceng.tasks.base import TaskInstance, program_header
 
 

@@ -7,8 +7,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.llm import LLMSettings
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_PART_CODE, DEFAULT_PART_SELECT, DEFAULT_SELECT
+from meceng.llm.types import LLMSettings
 
 
 @dataclass(frozen=True)

@@ -30,13 +30,13 @@ from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
 from meceng.logs import get_logger
-from meceng.tools.executor import Execution, ExecutionLimits
+from meceng.tools.execution import Execution, ExecutionLimits
 
 log = get_logger(__name__)
 
 STACK = ("exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "pymeshlab", "meceng")
 #: the harness code that decides what an execution captures
-CAPTURE_MODULES = ("runner.py", "part_runner.py", "guard.py", "executor.py", "inspection.py")
+CAPTURE_MODULES = ("runner.py", "harness.py", "part_runner.py", "guard.py", "executor.py", "execution.py", "inspection.py")
 FORMAT = 1
 
 

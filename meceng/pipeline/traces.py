@@ -29,7 +29,7 @@ from meceng.syntax import parsing
 from .rundir import safe_name
 
 if TYPE_CHECKING:
-    from meceng.tools.executor import Execution
+    from meceng.tools.execution import Execution
 
 log = get_logger(__name__)
 

@@ -21,6 +21,7 @@ import numpy as np
 
 from meceng.tasks.base import PREAMBLE, Param, SimSettings, TaskInstance, program_header, slugify
 from meceng.tasks.part_base import PartModel
+from meceng.tasks.parts import part_model
 
 #: The paper's note (section 2.3), word for word, appended before the part descriptions. What follows
 #: it departs from the paper's "descriptions of the parts": one line per part with its name, the call
@@ -85,10 +86,7 @@ class AssemblyModel:
     def instance(self, seed: int, models: dict[str, PartModel] | None = None) -> TaskInstance:
         """The assembly instance with its part instances (drawn with this instance's master values)."""
         if models is None:
-            from meceng.tasks.registry import default_registry
-
-            registry = default_registry()
-            models = {slug: registry.get(slug) for _, slug in self.choose_parts(seed)}  # type: ignore[misc]
+            models = {slug: part_model(slug) for _, slug in self.choose_parts(seed)}
         values = self.sample_params(seed)
         key = f"{self.slug}@{seed}"
         parts = tuple((slot, models[slug].instance(seed, master=values, origin=key))

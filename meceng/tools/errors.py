@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 import traceback
+from pathlib import Path
 from typing import Any
 
 PROGRAM_NAME = "program.py"
@@ -55,3 +56,8 @@ def _name(filename: str, program_path: str) -> str:
 
 def _shorten(text: str, limit: int = 80) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def describe_exception(exc: BaseException, workdir: Path, program: str) -> dict[str, Any]:
+    """The program's exception at its own line, without harness frames or this machine's paths."""
+    return program_error(exc, str(workdir / PROGRAM_NAME), program, str(workdir))

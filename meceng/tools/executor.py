@@ -20,92 +20,16 @@ import sys
 import tempfile
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
 from meceng.syntax import parsing
+from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.warm import WarmPool
 
 #: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
 ENV_KEEP = ("PATH", "HOME", "LANG", "LC_ALL", "PYTHONPATH", "VIRTUAL_ENV", "TMPDIR", "SYSTEMROOT")
-
-
-@dataclass(frozen=True)
-class ExecutionLimits:
-    """Hard limits of one program run."""
-
-    timeout_s: float = 60.0
-    memory_bytes: int = 6 * 1024**3
-    file_bytes: int = 256 * 1024**2
-    output_bytes: int = 64 * 1024
-    keep_scratch: bool = False
-    guard: bool = True
-    isolate_network: bool = True
-    mode: str = "rigid"  # "part": a level 3a program, captured by the part runner
-    n_modes: int = 6
-    save_fem_to: str | None = None  # part mode: keep the program's reduced FEMinterface here (.npz)
-    # the model inspector: body and marker states at t = 0 and at these times (None: not recorded)
-    inspect_times: tuple[float, ...] | None = None
-
-
-@dataclass(frozen=True)
-class Execution:
-    """What running one program produced.
-
-    ``stage`` is the last stage reached: refused (static check), started, reached_assemble,
-    finished_assemble, solver_started, solved. ``error_kind`` tells infrastructure from program
-    faults: safety, exception, timeout, crash, no_result.
-    """
-
-    stage: str
-    error: str | None = None
-    error_kind: str | None = None
-    error_line: int | None = None  # the program's line the error was raised at
-    items: dict[str, list[dict[str, Any]]] | None = None
-    system: dict[str, Any] = field(default_factory=dict)
-    times: np.ndarray | None = None
-    trajectory: np.ndarray | None = None
-    warnings: tuple[str, ...] = ()
-    part: dict[str, Any] | None = None
-    surface: tuple[np.ndarray, np.ndarray] | None = None
-    fine_surface: tuple[np.ndarray, np.ndarray] | None = None  # the solid's surface, meshed finer (metric)
-    part_times: dict[str, float] = field(default_factory=dict)
-    fem_file: str | None = None
-    stdout_tail: str = ""
-    stderr_tail: str = ""
-    returncode: int | None = None
-    wall_time: float = 0.0
-    solve_time: float | None = None
-    inspection: dict[str, Any] | None = None  # the model inspector's states (ExecutionLimits.inspect_times)
-
-    @property
-    def finished_assemble(self) -> bool:
-        return self.stage in ("finished_assemble", "solver_started", "solved")
-
-    @property
-    def solved(self) -> bool:
-        return self.stage == "solved" and self.error is None
-
-    def summary(self) -> dict[str, Any]:
-        """The JSON-friendly part, for the task record."""
-        return {
-            "stage": self.stage,
-            "error": self.error,
-            "error_kind": self.error_kind,
-            "error_line": self.error_line,
-            "warnings": list(self.warnings),
-            "returncode": self.returncode,
-            "wall_time": round(self.wall_time, 4),
-            "solve_time": None if self.solve_time is None else round(self.solve_time, 4),
-            "steps": None if self.times is None else len(self.times),
-            "system": self.system,
-            "stderr_tail": self.stderr_tail[-2000:],
-            **({"part": self.part, "part_times": self.part_times, "fem_file": self.fem_file}
-               if self.part is not None else {}),
-        }
 
 
 def child_env() -> dict[str, str]:

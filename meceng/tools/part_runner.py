@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from meceng.tools import guard
-from meceng.tools.runner import describe_exception
+from meceng.tools.errors import describe_exception
 
 
 def run_part(job: dict[str, Any], workdir: Path) -> int:

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.cache import read_jsonl
 from meceng.eval.chain import RIGID_STAGES
 from meceng.eval.parts import PART_STAGES
+from meceng.jsonl import read_jsonl
 from meceng.pipeline.rundir import record_key
 from meceng.pipeline.traces import safe_key
 

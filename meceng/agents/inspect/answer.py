@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from meceng.agents.inspect.view import ANGLES, Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.system import ANGLES, Body, BodyState, Connector, SystemView
 
 QUANTITIES = ("position", "angles", "velocity", "angular_velocity")
 

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.view import Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.system import Body, BodyState, Connector, SystemView
 
 Point = tuple[float, float, float]
 

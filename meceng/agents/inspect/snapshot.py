@@ -37,7 +37,7 @@ from meceng.agents.inspect.scene import (
     hull,
     sample_index,
 )
-from meceng.agents.inspect.view import SystemView, direction
+from meceng.agents.inspect.system import SystemView, direction
 
 _AXIS_NAMES = "xyz"
 MAX_LABELS = 40  # body numbers per panel; a larger system names the first ones

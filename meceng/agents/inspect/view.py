@@ -9,125 +9,19 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from meceng.agents.inspect.names import BODY_KINDS, load_name, object_name
-
-ANGLES = "angles (rx, ry, rz) in rad, R = Rx(rx)·Ry(ry)·Rz(rz) (Tait-Bryan x-y'-z'')"
+from meceng.agents.inspect.system import Body, BodyState, Connector, CoordinateRange, Load, SystemView, direction
+from meceng.catalog.names import BODY_KINDS, load_name, object_name
 
 #: Item keys that are bookkeeping, not physics; left out of a connector's parameters.
 _NOT_PARAMETERS = frozenset({"objectType", "name", "markerNumbers", "activeConnector", "nodeNumber", "nodeNumbers",
                              "rotationMarker0", "rotationMarker1", "visualization"})
 _AUTO_NAME = re.compile(r"^(object|load|marker|node|sensor)\d+$")
 _E = np.eye(3)
-
-
-@dataclass(frozen=True)
-class BodyState:
-    """A body at one time: centre of mass, orientation, velocity of the centre of mass, angular velocity."""
-
-    t: float
-    position: tuple[float, ...]
-    rotation: np.ndarray | None = None  # 3x3, body to global
-    velocity: tuple[float, ...] | None = None
-    angular_velocity: tuple[float, ...] | None = None
-
-    @property
-    def angles(self) -> tuple[float, ...] | None:
-        if self.rotation is None:
-            return None
-        return tuple(float(a) for a in Rotation.from_matrix(self.rotation).as_euler("XYZ"))
-
-
-@dataclass(frozen=True)
-class Body:
-    index: int
-    kind: str  # the catalog's name
-    exudyn_type: str
-    name: str | None  # the program's own name; None where Exudyn named it
-    mass: float | None
-    centre_local: tuple[float, ...]  # centre of mass in body coordinates
-    principal_inertia: tuple[float, ...] | None  # about the centre of mass, ascending
-    node: int | None
-    principal_axes: np.ndarray | None = None  # columns: the principal axes in body coordinates
-    states: tuple[BodyState, ...] = ()
-
-    @property
-    def label(self) -> str:
-        return f"#{self.index} {self.kind}" + (f" '{self.name}'" if self.name else "")
-
-    @property
-    def is_ground(self) -> bool:
-        return self.kind == "Ground"
-
-    def state_at(self, t: float) -> BodyState | None:
-        if not self.states:
-            return None
-        return min(self.states, key=lambda s: abs(s.t - t))
-
-
-@dataclass(frozen=True)
-class Connector:
-    index: int
-    kind: str
-    exudyn_type: str
-    name: str | None
-    bodies: tuple[int | None, ...]  # object numbers of the connected bodies (None: not a body marker)
-    points: tuple[tuple[float, ...] | None, ...]  # global marker positions at t = 0
-    axis: tuple[float, ...] | None  # the joint's or spring's axis in global terms
-    free: str = ""
-    locked: str = ""
-    parameters: dict[str, Any] = field(default_factory=dict)
-    derived: dict[str, float] = field(default_factory=dict)  # initial length, gap, ...
-    markers: tuple[int, ...] = ()
-
-    @property
-    def label(self) -> str:
-        return f"#{self.index} {self.kind}" + (f" '{self.name}'" if self.name else "")
-
-
-@dataclass(frozen=True)
-class Load:
-    index: int
-    kind: str
-    body: int | None
-    point: tuple[float, ...] | None
-    vector: tuple[float, ...] | None  # None: given by a user function
-    body_fixed: bool = False
-
-    @property
-    def label(self) -> str:
-        return f"load {self.index} {self.kind}"
-
-
-@dataclass(frozen=True)
-class CoordinateRange:
-    body: int
-    name: str  # x, y, z, rx, ry, rz, phi
-    low: float
-    high: float
-
-
-@dataclass(frozen=True)
-class SystemView:
-    bodies: tuple[Body, ...]
-    connectors: tuple[Connector, ...]
-    loads: tuple[Load, ...]
-    times: tuple[float, ...]  # the sample times with states (0 first)
-    ranges: tuple[CoordinateRange, ...]
-    degrees_of_freedom: int | None
-    redundant_constraints: int | None
-    marker_states: tuple[dict[int, tuple[float, ...]], ...] = ()  # marker positions at each sample time
-
-    def body(self, index: int) -> Body | None:
-        return next((b for b in self.bodies if b.index == index), None)
-
-    def moving_bodies(self) -> tuple[Body, ...]:
-        return tuple(b for b in self.bodies if not b.is_ground)
 
 
 def _tuple(value: Any) -> tuple[float, ...] | None:
@@ -286,16 +180,6 @@ def _semantics(exudyn_type: str, item: dict[str, Any], frame: np.ndarray | None,
 
 _LENGTH_TYPES = frozenset({"ConnectorSpringDamper", "ConnectorDistance", "ContactSphereSphere",
                           "ConnectorCartesianSpringDamper"})
-
-
-def direction(vector: tuple[float, ...] | list[float] | None) -> str:
-    """A direction: the axis's name where it is a global axis (``-y``), else its components."""
-    if vector is None:
-        return "?"
-    for k, name in enumerate("xyz"):
-        if len(vector) == 3 and abs(abs(vector[k]) - 1.0) < 1e-6 and sum(abs(v) for v in vector) < 1.0 + 1e-6:
-            return ("-" if vector[k] < 0 else "") + name
-    return "(" + ", ".join(f"{x:.4g}" for x in vector) + ")"
 
 
 _NODE_COORDINATES = {

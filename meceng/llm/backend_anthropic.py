@@ -20,16 +20,9 @@ from typing import Any
 
 import anthropic
 
-from meceng.agents.llm import (
-    IMAGE_MEDIA_TYPE,
-    ChatRequest,
-    ChatResponse,
-    LLMError,
-    LLMSettings,
-    ToolCall,
-    parse_retry_after,
-)
-from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.messages import IMAGE_MEDIA_TYPE
+from meceng.llm.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.types import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall, parse_retry_after
 
 MIN_THINKING_BUDGET = 1024
 BUDGET_SHARE = {True: 0.75, "low": 0.25, "medium": 0.5, "high": 0.75}

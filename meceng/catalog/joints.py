@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from meceng.agents.catalog import Component, text_block
-from meceng.agents.components_common import rigid_example
+from meceng.catalog.common import rigid_example
+from meceng.catalog.component import Component, text_block
 
 REVOLUTE_JOINT = Component(
     name="RevoluteJoint",

@@ -16,7 +16,8 @@ import os
 from pathlib import Path
 from typing import Any
 
-from meceng.agents.llm import Backend, ChatRequest, ChatResponse, LLMSettings, ToolCall
+from meceng.jsonl import read_jsonl
+from meceng.llm.types import Backend, ChatRequest, ChatResponse, LLMSettings, ToolCall
 
 
 def request_key(settings: LLMSettings, request: ChatRequest) -> str:
@@ -26,24 +27,6 @@ def request_key(settings: LLMSettings, request: ChatRequest) -> str:
         "tools": list(request.tools),
     }
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
-
-
-def read_jsonl(path: Path) -> list[dict[str, Any]]:
-    """Complete lines of a JSONL file; a trailing partial line (killed writer) is cut off."""
-    if not path.exists():
-        return []
-    data = path.read_bytes()
-    end = data.rfind(b"\n") + 1
-    if end < len(data):
-        with path.open("r+b") as f:
-            f.truncate(end)
-    rows = []
-    for line in data[:end].splitlines():
-        try:
-            rows.append(json.loads(line))
-        except ValueError:
-            continue
-    return rows
 
 
 class ResponseCache:

@@ -24,7 +24,7 @@ from typing import Any
 
 from tenacity import AsyncRetrying, RetryCallState, retry_if_exception, stop_after_attempt, wait_exponential
 
-from meceng.agents.llm import ChatRequest, ChatResponse, LLMError, LLMSettings
+from meceng.llm.types import ChatRequest, ChatResponse, LLMError, LLMSettings
 from meceng.logs import get_logger
 
 log = get_logger(__name__)

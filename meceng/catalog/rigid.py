@@ -9,23 +9,10 @@ a second and writes no file; ``tests/test_catalog.py`` runs them all.
 
 from __future__ import annotations
 
-from meceng.agents.catalog import Component
-from meceng.agents.components_bodies import (
-    GROUND,
-    INERTIA_CUBOID,
-    INERTIA_CYLINDER,
-    INERTIA_SPHERE,
-    MASS_POINT,
-    RIGID_BODY,
-)
-from meceng.agents.components_joints import (
-    GENERIC_JOINT,
-    PRISMATIC_JOINT,
-    REVOLUTE_JOINT,
-    ROLLING_DISC,
-    SPHERICAL_JOINT,
-)
-from meceng.agents.components_loads import (
+from meceng.catalog.bodies import GROUND, INERTIA_CUBOID, INERTIA_CYLINDER, INERTIA_SPHERE, MASS_POINT, RIGID_BODY
+from meceng.catalog.component import Component
+from meceng.catalog.joints import GENERIC_JOINT, PRISMATIC_JOINT, REVOLUTE_JOINT, ROLLING_DISC, SPHERICAL_JOINT
+from meceng.catalog.loads import (
     FORCE,
     JOINT_PD_CONTROL,
     LOAD_USER_FUNCTION,
@@ -34,7 +21,7 @@ from meceng.agents.components_loads import (
     SPHERE_TRIANGLE_CONTACT,
     TORQUE,
 )
-from meceng.agents.components_springs import (
+from meceng.catalog.springs import (
     CARTESIAN_SPRING_DAMPER,
     COORDINATE_CONSTRAINT,
     COORDINATE_SPRING_DAMPER,

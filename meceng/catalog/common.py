@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from meceng.agents.catalog import text_block
+from meceng.catalog.component import text_block
 from meceng.tasks.base import PREAMBLE, SimSettings
 
 

@@ -85,29 +85,3 @@ class Catalog:
         for c in self.resolve(names):
             blocks.append(f"### {c.name}\n{c.context.strip()}\nExample:\n```python\n{c.example.strip()}\n```")
         return "\n\n".join(blocks)
-
-
-def rigid_catalog() -> Catalog:
-    from meceng.agents.components_rigid import COMPONENTS
-
-    return Catalog(COMPONENTS)
-
-
-def part_catalog() -> Catalog:
-    """Level 3a: geometry and FEM components."""
-    from meceng.agents.components_part import COMPONENTS
-
-    return Catalog(COMPONENTS)
-
-
-def assembly_catalog() -> Catalog:
-    """Level 3b: the rigid components plus flexible bodies, interface joints and loads."""
-    from meceng.agents.components_flexible import COMPONENTS as FLEXIBLE
-    from meceng.agents.components_rigid import COMPONENTS as RIGID
-
-    return Catalog(RIGID + FLEXIBLE)
-
-
-def catalog_for(kind: str) -> Catalog:
-    """The catalog a task of this kind chooses from: "rigid" (levels 1-2), "part" or "assembly"."""
-    return {"part": part_catalog, "assembly": assembly_catalog}.get(kind, rigid_catalog)()

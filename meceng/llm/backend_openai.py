@@ -16,8 +16,9 @@ from typing import Any
 
 import httpx
 
-from meceng.agents.llm import (
-    IMAGE_MEDIA_TYPE,
+from meceng.llm.messages import IMAGE_MEDIA_TYPE, pictures_after_tool_results
+from meceng.llm.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.types import (
     ChatRequest,
     ChatResponse,
     ContextExceeded,
@@ -25,9 +26,7 @@ from meceng.agents.llm import (
     LLMSettings,
     ToolCall,
     parse_retry_after,
-    pictures_after_tool_results,
 )
-from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
 from meceng.logs import get_logger
 
 log = get_logger(__name__)

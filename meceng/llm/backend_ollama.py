@@ -13,16 +13,9 @@ from typing import Any
 
 import aiohttp
 
-from meceng.agents.llm import (
-    ChatRequest,
-    ChatResponse,
-    LLMError,
-    LLMSettings,
-    ToolCall,
-    parse_retry_after,
-    pictures_after_tool_results,
-)
-from meceng.agents.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.messages import pictures_after_tool_results
+from meceng.llm.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.types import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall, parse_retry_after
 
 
 class OllamaBackend(EndpointBackend):

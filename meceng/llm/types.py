@@ -1,13 +1,13 @@
-"""Language-model backends behind one async interface: settings, requests, answers, errors.
+"""What every language-model backend shares: settings, requests, answers, errors, the protocol.
 
 ``ollama`` talks to one or more Ollama servers (``/api/chat``, ``stream: false``) over aiohttp;
 ``openai`` to OpenAI's API or an OpenAI-compatible server (vLLM, SGLang); ``anthropic`` to
 Anthropic's Messages API; ``gold`` answers every request with the ground truth, which proves the
 harness end to end on a machine without a model (like SWE-bench's gold patches).
 
-The types every backend shares live here, among them the one message format the agent loop
-writes (each backend translates it to its wire format); the per-endpoint scheduler (slots,
-retries) in ``scheduler.py``; the HTTP backends in ``backend_*.py``.
+The one message format the agent loop writes is in ``messages.py`` (each backend translates it to
+its wire format); the per-endpoint scheduler (slots, retries) in ``scheduler.py``; the backends in
+``backend_*.py``; ``factory.py`` picks one, so that types <- backends <- factory is one way.
 
 API keys are read from the environment when a backend is made and are never part of the
 settings, so no run file can hold one.
@@ -201,20 +201,6 @@ class Backend(Protocol):
     async def aclose(self) -> None: ...
 
 
-class GoldBackend:
-    """Answers with the ground truth: the required components and the reference program."""
-
-    name = "gold"
-
-    async def chat(self, request: ChatRequest) -> ChatResponse:
-        if request.gold is None:
-            raise LLMError(f"no gold answer for {request.purpose} of {request.task_key}", transient=False)
-        return ChatResponse(content=request.gold, done_reason="stop", endpoint="gold")
-
-    async def aclose(self) -> None:
-        return None
-
-
 BACKENDS = ("ollama", "openai", "anthropic", "gold")
 DEFAULT_HOSTS = {"ollama": "http://127.0.0.1:11434", "openai": "https://api.openai.com/v1",
                  "anthropic": "https://api.anthropic.com", "gold": "gold"}
@@ -227,89 +213,3 @@ def api_key(settings: LLMSettings) -> str | None:
 
     variable = settings.api_key_env or KEY_VARIABLES.get(settings.backend)
     return os.environ.get(variable) if variable else None
-
-
-def make_backend(settings: LLMSettings) -> Backend:
-    if settings.backend == "gold":
-        return GoldBackend()
-    if settings.backend == "ollama":
-        from meceng.agents.backend_ollama import OllamaBackend
-
-        return OllamaBackend(settings)
-    if settings.backend == "openai":
-        from meceng.agents.backend_openai import OpenAIBackend
-
-        return OpenAIBackend(settings, api_key=api_key(settings))
-    if settings.backend == "anthropic":
-        from meceng.agents.backend_anthropic import AnthropicBackend
-
-        return AnthropicBackend(settings, api_key=api_key(settings))
-    raise ValueError(f"unknown backend {settings.backend!r} (choose {', '.join(BACKENDS)})")
-
-
-# ----------------------------------------------------------------------------- the agent's messages
-# One format for a conversation with tools, written by the agent loop; every backend translates
-# it to its own wire format (Ollama, OpenAI and Anthropic differ in how calls and results look).
-
-
-def assistant_message(response: ChatResponse) -> dict[str, Any]:
-    """The model's turn as the conversation keeps it: text, tool calls (with their ids) and, for
-    Anthropic, the signed thinking that must go back with a tool-use turn."""
-    message: dict[str, Any] = {"role": "assistant", "content": response.content}
-    if response.tool_calls:
-        message["tool_calls"] = [call.to_json() for call in response.tool_calls]
-    if response.signature:
-        message["thinking"], message["signature"] = response.thinking, response.signature
-    return message
-
-
-def tool_message(call: ToolCall, result: str, images: tuple[str, ...] = ()) -> dict[str, Any]:
-    """A tool's answer to one call; ``images`` are base64-encoded PNGs (a ``snapshot``), which each
-    backend sends the way its API carries pictures."""
-    message: dict[str, Any] = {"role": "tool", "tool_call_id": call.id, "name": call.name, "content": result}
-    if images:
-        message["images"] = list(images)
-    return message
-
-
-IMAGE_MEDIA_TYPE = "image/png"  # what a tool's ``images`` are (base64 of the file's bytes)
-
-
-def pictures_after_tool_results(messages: tuple[dict[str, Any], ...]) -> list[dict[str, Any]]:
-    """The conversation for an API whose tool messages carry text only: the pictures of each run of
-    tool answers move to one user message right after that run, with a line saying which calls they
-    belong to.
-
-    OpenAI's Chat Completions takes images in user messages only, and every tool answer must
-    directly follow the assistant turn that called it, so the pictures cannot sit between the
-    answers; Ollama's API takes ``images`` on any message, but some of its vision models' templates
-    (Qwen3-VL's renderer) write a tool message's text without its images. A conversation without
-    pictures comes back as it was, message for message."""
-    out: list[dict[str, Any]] = []
-    pictured: list[dict[str, Any]] = []
-    for message in messages:
-        if message["role"] != "tool" and pictured:
-            out.append(_pictures_message(pictured))
-            pictured = []
-        if message["role"] == "tool" and message.get("images"):
-            pictured.append(message)
-            message = {k: v for k, v in message.items() if k != "images"}
-        out.append(message)
-    if pictured:
-        out.append(_pictures_message(pictured))
-    return out
-
-
-def _pictures_message(answers: list[dict[str, Any]]) -> dict[str, Any]:
-    """One user message with the pictures of these tool answers, in order, and a caption naming them."""
-    named = []
-    for answer in answers:
-        count = len(answer["images"])
-        call = f" {answer['tool_call_id']}" if answer.get("tool_call_id") else ""
-        named.append(f"{answer['name']}{call} ({count} picture{'s' if count > 1 else ''})")
-    return {"role": "user", "content": "Pictures returned by the tool calls above, in order: " + "; ".join(named),
-            "images": [image for answer in answers for image in answer["images"]]}
-
-
-def user_messages(*texts: str) -> tuple[dict[str, str], ...]:
-    return tuple({"role": "user", "content": t} for t in texts)

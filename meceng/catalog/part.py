@@ -9,7 +9,7 @@ Every example is a complete part program in the style of the ground truths in
 
 from __future__ import annotations
 
-from meceng.agents.catalog import Component, text_block
+from meceng.catalog.component import Component, text_block
 from meceng.tasks.part_base import PART_PREAMBLE, STEEL, fem_block
 
 

@@ -8,7 +8,7 @@ loads act on those markers as on rigid bodies. Every example loads the same save
 
 from __future__ import annotations
 
-from meceng.agents.catalog import Component, text_block
+from meceng.catalog.component import Component, text_block
 from meceng.tasks.base import PREAMBLE, SimSettings
 from meceng.tasks.part_base import STEEL, fem_block
 

@@ -1,0 +1,79 @@
+"""The agent's tools as the model sees them: name, description and JSON-schema parameters of each
+(sent as native tool definitions), and the fixed notes their answers carry."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from meceng.agents.inspect.answer import QUANTITIES
+
+_CODE = {"type": "string", "description": "the complete program, as you would answer it"}
+
+TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
+    {
+        "name": "simulate",
+        "description": ("Run a complete Exudyn program and report what it built and how it moved, in the "
+                        "description's terms (global frame, SI units, the catalog's component names): every body "
+                        "with mass, centre of mass, principal inertia, initial position, angles and velocities; "
+                        "every connector with the bodies it joins, where, its free and locked directions, its "
+                        "parameters; every load with its vector; then the bodies' states at a few times and the "
+                        "range of every coordinate over the run. Long lists are cut and say how to ask for more."),
+        "parameters": {"type": "object", "properties": {
+            "code": _CODE,
+            "bodies": {"type": "array", "items": {"type": "integer"},
+                       "description": "object numbers (#n) of the bodies to show in full, with their connectors"},
+            "times": {"type": "array", "items": {"type": "number"},
+                      "description": "times (s) at which to report the states (default: half the end time "
+                                     "and the end time; at most eight)"},
+            "quantities": {"type": "array", "items": {"type": "string", "enum": list(QUANTITIES)},
+                           "description": "which states to report (default: all)"}},
+            "required": ["code"]},
+    },
+    {
+        "name": "snapshot",
+        "description": ("Draw the program's system at t = 0 and at a later time (default: the end time): "
+                        "rigid bodies as inertia-equivalent boxes, mass points as dots, ground, joints with their "
+                        "axes, springs and constraints as lines, contacts, forces as arrows; three orthogonal views "
+                        "and an isometric one."),
+        "parameters": {"type": "object", "properties": {
+            "code": _CODE, "time": {"type": "number", "description": "the second picture's time in s"}},
+            "required": ["code"]},
+    },
+    {
+        "name": "self_check",
+        "description": ("Check a program for problems that need no reference solution: errors, redundant "
+                        "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
+                        "Returns the degrees of freedom and a list of findings."),
+        "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
+    },
+    {
+        "name": "list_components",
+        "description": "The catalog of simulation components with one line each.",
+        "parameters": {"type": "object", "properties": {}},
+    },
+    {
+        "name": "component_docs",
+        "description": "Documentation and a working example for the named catalog components.",
+        "parameters": {"type": "object", "properties": {"names": {"type": "array", "items": {"type": "string"}}},
+                       "required": ["names"]},
+    },
+)
+
+MESH_PART_SCHEMA: dict[str, Any] = {
+    "name": "mesh_part",
+    "description": ("Build, mesh and reduce a complete part program (as you would answer it) and report what "
+                    "it made: stage, error, volume, mass, bounding box, every interface with its area, centre, mean "
+                    "outward normal and number of faces, the eigenfrequencies of the fixed-interface normal modes "
+                    "of its Hurty-Craig-Bampton reduction, and the number of nodes. The program must hard-code maxh."),
+    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
+}
+
+PART_SNAPSHOT_SCHEMA: dict[str, Any] = {
+    "name": "snapshot",
+    "description": ("Mesh a complete part program and draw the part: three orthogonal views and an isometric one, "
+                    "its interfaces coloured and named."),
+    "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
+}
+
+FREQUENCIES_NOTE = ("fixed-interface normal modes of the Hurty-Craig-Bampton reduction (every interface clamped), "
+                    "lowest first, in Hz")
