@@ -8,12 +8,14 @@ was left out and which argument brings it back (``bodies``, ``times``, ``quantit
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
-import numpy as np
-
 from meceng.agents.inspect.system import ANGLES, Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.words import connector_line as _connector_line
+from meceng.agents.inspect.words import name_of as _name_of
+from meceng.agents.inspect.words import num, vec
+from meceng.agents.inspect.words import value_text as _value
 
 QUANTITIES = ("position", "angles", "velocity", "angular_velocity")
 
@@ -29,16 +31,6 @@ class Ask:
     @property
     def focused(self) -> bool:
         return bool(self.bodies)
-
-
-def num(x: float) -> str:
-    """Four significant digits; round-off below 1e-12 shows as 0."""
-    text = f"{0.0 if abs(x) < 1e-12 else x:.4g}"
-    return "0" if text in ("-0", "0", "-0.0") else text
-
-
-def vec(values: Iterable[float] | None) -> str:
-    return "?" if values is None else "(" + ", ".join(num(v) for v in values) + ")"
 
 
 def _state(body: Body, state: BodyState, quantities: Sequence[str]) -> str:
@@ -67,41 +59,6 @@ def _body_line(body: Body, ask: Ask) -> str:
     if start is not None:
         facts.append(_state(body, start, ask.quantities))
     return f"{body.label}: " + ", ".join(f for f in facts if f)
-
-
-def _name_of(view: SystemView, index: int | None) -> str:
-    if index is None:
-        return "a node coordinate"
-    body = view.body(index)
-    return body.label if body is not None else f"#{index}"
-
-
-def _connector_line(view: SystemView, c: Connector) -> str:
-    ends = " — ".join(_name_of(view, b) for b in c.bodies)
-    facts = [f"{c.label}: {ends}"]
-    points = [p for p in c.points if p is not None]
-    if points:
-        same = len(points) == 2 and np.allclose(points[0], points[1], atol=1e-9)
-        facts.append(f"at {vec(points[0])}" if same or len(points) == 1 else "at " + " and ".join(map(vec, points)))
-    if c.axis is not None and not c.free:
-        facts.append(f"axis {vec(c.axis)}")
-    if c.free:
-        facts.append(f"free: {c.free}")
-    if c.locked:
-        facts.append(f"locked: {c.locked}")
-    facts.extend(f"{k} {_value(v)}" for k, v in c.parameters.items() if k != "constrainedAxes")
-    facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
-    return ", ".join(facts)
-
-
-def _value(v: object) -> str:
-    if isinstance(v, bool):
-        return str(v).lower()
-    if isinstance(v, int | float):
-        return num(float(v))
-    if isinstance(v, list):
-        return vec(np.ravel(np.asarray(v, dtype=float)))
-    return str(v)
 
 
 def _group_key(c: Connector) -> tuple[str, str]:

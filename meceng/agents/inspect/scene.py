@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from meceng.agents.inspect.geometry import placed
 from meceng.agents.inspect.system import Body, BodyState, Connector, SystemView
 
 Point = tuple[float, float, float]
@@ -21,7 +22,8 @@ Point = tuple[float, float, float]
 COLOURS = {"body": "#4a7fc1", "ground": "#666666", "joint": "#d62728", "spring": "#2ca02c",
            "distance": "#9467bd", "contact": "#ff7f0e", "load": "#8c564b"}
 LEGEND = ("blue: bodies (rigid bodies as inertia-equivalent boxes, mass points as dots); grey square: ground; "
-          "red: joints and their axes; green: springs; purple: distance constraints; orange: contacts; "
+          "red: joints and their axes; green: springs; purple: distance constraints; orange: contact geometry "
+          "(contact spheres as circles, triangles filled); "
           "brown arrows: forces")
 
 _ROLES = {"SpringDamper": "spring", "CartesianSpringDamper": "spring", "TorsionalSpringDamper": "spring",
@@ -142,8 +144,7 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
             if role != "contact" and not np.allclose(points[0], points[1]):  # a contact is no link
                 shapes.append(Shape("line", role, (points[0], points[1])))
             if role == "contact":
-                for point, radius in zip(points, c.parameters.get("spheresRadii") or [], strict=False):
-                    shapes.append(Shape("circle", role, (point,), float(radius)))
+                shapes += _contact_shapes(view, c, k, points)
     for body in view.bodies:
         state = body.state_at(at)
         if state is None or len(state.position) < 3:
@@ -166,6 +167,25 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
         tail = np.asarray(state.position[:3])
         shapes.append(Shape("arrow", "load", (_p(tail), _p(tail + np.asarray(load.vector[:3]) / norm * 0.15 * size))))
     return tuple(shapes)
+
+
+def _contact_shapes(view: SystemView, c: Connector, k: int, points: list[Point]) -> list[Shape]:
+    """A contact's own geometry: its spheres as circles, a triangle as a filled triangle."""
+    radii = list(c.parameters.get("spheresRadii") or [])
+    if "triangle_local" in c.geometry:
+        radii = [c.geometry["radius"]]
+        marker = c.markers[1]
+        origin = (view.marker_states[k] if k < len(view.marker_states) else {}).get(marker)
+        rotation = (view.marker_rotations[k] if k < len(view.marker_rotations) else {}).get(marker)
+        if origin is not None and len(origin) >= 3:
+            corners = placed(c.geometry["triangle_local"], origin, rotation)
+            out = [Shape("box", "contact", tuple(_p(p) for p in corners))]
+        else:
+            out = []
+    else:
+        out = []
+    return out + [Shape("circle", "contact", (point,), float(radius))
+                  for point, radius in zip(points, radii, strict=False)]
 
 
 def bounds(scenes: list[tuple[Shape, ...]], projection: Projection) -> tuple[np.ndarray, np.ndarray]:

@@ -70,6 +70,7 @@ class Connector:
     parameters: dict[str, Any] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)  # initial length, gap, ...
     markers: tuple[int, ...] = ()
+    geometry: dict[str, Any] = field(default_factory=dict)  # contact geometry (``geometry.py``)
 
     @property
     def label(self) -> str:
@@ -108,6 +109,7 @@ class SystemView:
     degrees_of_freedom: int | None
     redundant_constraints: int | None
     marker_states: tuple[dict[int, tuple[float, ...]], ...] = ()  # marker positions at each sample time
+    marker_rotations: tuple[dict[int, np.ndarray], ...] = ()  # rigid markers' rotations at each sample time
 
     def body(self, index: int) -> Body | None:
         return next((b for b in self.bodies if b.index == index), None)

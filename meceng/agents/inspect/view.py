@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from meceng.agents.inspect.geometry import sphere_triangle
 from meceng.agents.inspect.system import Body, BodyState, Connector, CoordinateRange, Load, SystemView, direction
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
 
@@ -94,6 +95,8 @@ def _markers_at(inspection: dict[str, Any], k: int) -> dict[int, dict[str, Any]]
 def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], node_body: dict[int, int],
                marker_t0: dict[int, dict[str, Any]]) -> Connector:
     exudyn_type = str(item.get("objectType", ""))
+    if "trianglePoints" in item:  # Exudyn reports a sphere-triangle contact as ContactSphereSphere
+        exudyn_type = "ContactSphereTriangle"
     numbers = [int(m) for m in item.get("markerNumbers") or [] if isinstance(m, int | float)]
     bodies: list[int | None] = []
     for m in numbers:
@@ -114,8 +117,11 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
     parameters = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k
                   and _small(v) and (k in _ALWAYS_SHOWN or _nonzero(v))}
     axis, free, locked, derived = _semantics(exudyn_type, item, frame, points)
+    shape: dict[str, Any] = {}
+    if exudyn_type == "ContactSphereTriangle" and len(numbers) == 2:
+        shape = sphere_triangle(item, points[0], points[1], _rotation(marker_t0.get(numbers[1], {}).get("R")))
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
-                     free, locked, parameters, derived, tuple(numbers))
+                     free, locked, parameters, derived, tuple(numbers), shape)
 
 
 #: Parameters a model must see even at zero (a spring without damping is a fact, not a default).
@@ -259,10 +265,13 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
     states = inspection.get("states", [])
     marker_states = tuple({int(m): _tuple(v.get("p")) or () for m, v in s.get("markers", {}).items()}
                           for s in states)
+    marker_rotations = tuple({int(m): r for m, v in s.get("markers", {}).items()
+                              if (r := _rotation(v.get("R"))) is not None} for s in states)
     view_bodies = tuple(bodies)
     return SystemView(view_bodies, tuple(connectors), tuple(loads), tuple(float(s["t"]) for s in states),
                       _ranges(view_bodies, nodes, inspection.get("ode2", {}), trajectory),
-                      _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states)
+                      _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
+                      marker_rotations)
 
 
 def _int(value: Any) -> int | None:

@@ -1,0 +1,72 @@
+"""What real models found wrong in the inspector and the snapshot (issue 34), each on a task model's
+ground truth: the contact's geometry, user-function loads as values, every body in the default
+answer, orientation of spinning bodies, inertia in body axes, counts, rolling discs, the picture.
+
+Every expected number comes from the task's own parameters and plain geometry or physics, never
+from a run of the inspector.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from meceng.agents.inspect.answer import vec
+from meceng.agents.inspect.scene import build_scene
+from meceng.agents.inspect.system import SystemView
+from meceng.agents.inspect.view import build_view
+from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import rigid_catalog
+from meceng.tasks.registry import default_registry
+from meceng.tools.execution import ExecutionLimits
+from meceng.tools.executor import execute
+
+WALL = "pendulum_wall_impacting"
+CAR = "non_steerable_four_wheeled_car"
+SCARA = "2r_scara_robot"
+DISC = "disc_rolling_on_ground"
+
+
+def _instance(slug: str, seed: int = 0):
+    return default_registry().get(slug).instance(seed)
+
+
+async def _simulate(slug: str, program: str | None = None, **arguments) -> str:
+    instance = _instance(slug)
+    code = program or instance.reference_program
+    return (await Toolbox(instance, rigid_catalog()).call("simulate", {"code": code, **arguments})).text
+
+
+async def _view(slug: str, times: tuple[float, ...] | None = None, program: str | None = None) -> SystemView:
+    instance = _instance(slug)
+    run = await execute(program or instance.reference_program, instance.sim.block(),
+                        ExecutionLimits(inspect_times=times or (instance.sim.end_time,)))
+    return build_view(run.items, run.system, run.inspection, run.trajectory)
+
+
+def _line(text: str, start: str) -> str:
+    return next(x.strip() for x in text.splitlines() if x.strip().startswith(start))
+
+
+async def test_a_sphere_triangle_contact_is_named_with_its_wall() -> None:
+    p = _instance(WALL).params
+    r, length = p["radius"], p["length"]
+    text = await _simulate(WALL)
+    line = _line(text, "#3 ")
+    assert line.startswith("#3 SphereTriangleContact: #1 RigidBody — #0 Ground"), line
+    assert "SphereSphereContact" not in text
+    corners = [(r, -length, -2 * length), (r, length, -2 * length), (r, 0.0, 0.0)]
+    assert "triangle corners " + ", ".join(vec(c) for c in corners) in line
+    assert "normal x " in line and "on its - side" in line
+    # the sphere's centre is L·sin(phi0) + r from the plane x = r, inside the triangle: gap L·sin(phi0)
+    gap = float(re.search(r"gap ([-\d.e+]+)", line).group(1))
+    assert gap == pytest.approx(length * np.sin(np.radians(p["angle_deg"])), rel=1e-3)
+    # and the picture draws the wall (orange, the three corners) and the sphere's contact circle
+    view = await _view(WALL)
+    for t in view.times:
+        contact = [s for s in build_scene(view, t) if s.role == "contact"]
+        wall = [s for s in contact if s.kind == "box"]
+        assert wall and np.allclose(wall[0].points, corners)
+        assert any(s.kind == "circle" and s.radius == pytest.approx(r) for s in contact)
