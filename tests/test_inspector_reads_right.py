@@ -13,7 +13,7 @@ import re
 import numpy as np
 import pytest
 
-from meceng.agents.inspect.answer import vec
+from meceng.agents.inspect.answer import num, vec
 from meceng.agents.inspect.scene import build_scene
 from meceng.agents.inspect.system import SystemView
 from meceng.agents.inspect.view import build_view
@@ -70,3 +70,32 @@ async def test_a_sphere_triangle_contact_is_named_with_its_wall() -> None:
         wall = [s for s in contact if s.kind == "box"]
         assert wall and np.allclose(wall[0].points, corners)
         assert any(s.kind == "circle" and s.radius == pytest.approx(r) for s in contact)
+
+
+def _trajectory(t: float, start: float, end: float, duration: float) -> tuple[float, float]:
+    """The SCARA description's cosine ramp: desired angle and rate."""
+    if t >= duration:
+        return end, 0.0
+    return (start + (end - start) * (1 - np.cos(np.pi * t / duration)) / 2,
+            (end - start) * np.pi / (2 * duration) * np.sin(np.pi * t / duration))
+
+
+async def test_user_function_torques_show_as_values_the_control_law_gives() -> None:
+    """The SCARA's PD torques, evaluated in the sandbox at the sampled states, are the description's
+    law applied to the states the same answer reports."""
+    p = _instance(SCARA).params
+    view = await _view(SCARA, times=(0.5, 1.0))
+    text = await _simulate(SCARA, times=[0.5, 1.0])
+    assert "given by a user function" in text and "its values" in text
+    for t in (0.5, 1.0):
+        states = [view.body(b).state_at(t) for b in (1, 2)]
+        phi = [float(np.arctan2(s.rotation[1, 0], s.rotation[0, 0])) for s in states]
+        omega = [s.angular_velocity[2] for s in states]
+        q1d, v1d = _trajectory(t, *np.radians([p["q1_start_deg"], p["q1_end_deg"]]), p["duration"])
+        q2d, v2d = _trajectory(t, *np.radians([p["q2_start_deg"], p["q2_end_deg"]]), p["duration"])
+        tau1 = p["kp"] * (q1d - phi[0]) + p["kd"] * (v1d - omega[0])
+        tau2 = p["kp"] * (q2d - (phi[1] - phi[0])) + p["kd"] * (v2d - (omega[1] - omega[0]))
+        for load, expected in zip([x for x in view.loads if x.vector is None], (tau1 - tau2, tau2), strict=True):
+            value = dict(load.values)[states[0].t]
+            assert value == pytest.approx((0, 0, expected), abs=1e-6 * max(1.0, abs(expected)))
+            assert f"t={num(states[0].t)} {vec(value)}" in text

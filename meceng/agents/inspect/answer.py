@@ -11,7 +11,7 @@ from collections import defaultdict
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from meceng.agents.inspect.system import ANGLES, Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.system import ANGLES, Body, BodyState, Connector, Load, SystemView
 from meceng.agents.inspect.words import connector_line as _connector_line
 from meceng.agents.inspect.words import name_of as _name_of
 from meceng.agents.inspect.words import num, vec
@@ -149,15 +149,29 @@ def _loads(view: SystemView, ask: Ask) -> list[str]:
         return []
     groups: dict[tuple[str, str], list[int | None]] = defaultdict(list)
     for load in chosen:
-        vector = "given by a user function" if load.vector is None else vec(load.vector)
+        if load.vector is None:  # a user function: its own line, with its values where it was called
+            vector = f"#{load.index} given by a user function" + _load_values(load)
+        else:
+            vector = vec(load.vector)
         fixed = " (body-fixed)" if load.body_fixed else ""
         groups[(load.kind, vector + fixed)].append(load.body)
     out = ["loads:"]
     for (kind, vector), bodies in groups.items():
+        if vector.startswith("#"):
+            _, _, rest = vector.partition(" ")
+            out.append(f"  {kind} on {_name_of(view, bodies[0])}: {rest}")
+            continue
         targets = ", ".join(_name_of(view, b) for b in bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4
                                                                       else "")
         out.append(f"  {kind} {vector} on {targets}")
     return out
+
+
+def _load_values(load: Load) -> str:
+    if not load.values:
+        return " (not evaluated: no sampled state)"
+    return "; its values (the function called at the sampled states): " + ", ".join(
+        f"t={num(t)} {value if isinstance(value, str) else vec(value)}" for t, value in load.values)
 
 
 def _motion(view: SystemView, shown: list[Body], ask: Ask, end_time: float | None) -> list[str]:

@@ -85,6 +85,8 @@ class Load:
     point: tuple[float, ...] | None
     vector: tuple[float, ...] | None  # None: given by a user function
     body_fixed: bool = False
+    #: a user function's values at the sampled times (evaluated in the sandbox); text where it raised
+    values: tuple[tuple[float, tuple[float, ...] | str], ...] = ()
 
     @property
     def label(self) -> str:

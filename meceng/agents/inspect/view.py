@@ -261,7 +261,7 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
         vector = None if user else _tuple(item.get("loadVector", item.get("load")))
         point = _tuple(marker_t0.get(int(item.get("markerNumber", -1)), {}).get("p"))
         loads.append(Load(index, load_name(str(item.get("loadType", "")), user), body, point, vector,
-                          bool(item.get("bodyFixed", False))))
+                          bool(item.get("bodyFixed", False)), _load_values(index, inspection) if user else ()))
     states = inspection.get("states", [])
     marker_states = tuple({int(m): _tuple(v.get("p")) or () for m, v in s.get("markers", {}).items()}
                           for s in states)
@@ -272,6 +272,18 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
                       _ranges(view_bodies, nodes, inspection.get("ode2", {}), trajectory),
                       _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
                       marker_rotations)
+
+
+def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, tuple[float, ...] | str], ...]:
+    """A user-function load's values at the sampled times, as the sandbox evaluated them."""
+    out: list[tuple[float, tuple[float, ...] | str]] = []
+    for sample in inspection.get("states", []):
+        value = sample.get("loads", {}).get(str(index))
+        if isinstance(value, dict):
+            out.append((float(sample["t"]), f"raised {value.get('error', 'an error')}"))
+        elif (vector := _tuple(value)) is not None:
+            out.append((float(sample["t"]), vector))
+    return tuple(out)
 
 
 def _int(value: Any) -> int | None:
