@@ -108,8 +108,7 @@ async def test_the_default_answer_of_the_largest_level_2_task_is_bounded_and_say
     instance = default_registry().get("grid_mesh_and_large_sphere_impact").instance(0)
     text = (await Toolbox(instance, rigid_catalog()).call("simulate", {"code": instance.reference_program})).text
     assert len(text) < 5000, len(text)
-    assert "14 more bodies not shown: 13 MassPoint of mass 0.0405 (#13–#25); 1 MassPoint of mass" in text
-    assert "call again with bodies=[#numbers]" in text
+    assert "25 × MassPoint of mass 0.0405 (#1–#25): positions from (0.153, 0.153, 0) to (0.765, 0.765, 0)" in text
     assert "60 × SpringDamper" in text and "25 × SphereSphereContact" in text
 
 

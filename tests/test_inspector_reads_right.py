@@ -99,3 +99,27 @@ async def test_user_function_torques_show_as_values_the_control_law_gives() -> N
             value = dict(load.values)[states[0].t]
             assert value == pytest.approx((0, 0, expected), abs=1e-6 * max(1.0, abs(expected)))
             assert f"t={num(states[0].t)} {vec(value)}" in text
+
+
+def _covered(section: str) -> set[int]:
+    """Object numbers a section names, runs like #1–#25 unfolded."""
+    out: set[int] = set()
+    for low, high in re.findall(r"#(\d+)(?:–#(\d+))?", section):
+        out.update(range(int(low), int(high or low) + 1))
+    return out
+
+
+async def test_the_default_answer_shows_every_body_of_the_car_and_of_the_largest_task() -> None:
+    times = [0.5, 1.0, 1.5, 2.0]  # four times asked for: every body still at every time
+    text = await _simulate(CAR, times=times)
+    bodies = text.split("bodies at t = 0:")[1].split("connectors")[0]
+    assert _covered(bodies) >= {0, 1, 2, 3, 4, 5}
+    for t in times:
+        for body in range(1, 6):
+            assert f"t={num(t)} #{body} RigidBody: position (" in text, (t, body)
+    grid = await _simulate("grid_mesh_and_large_sphere_impact")
+    section = grid.split("bodies at t = 0:")[1].split("connectors")[0]
+    assert _covered(section) >= set(range(1, 26)) | {86}
+    assert "#86 MassPoint: mass 0.823" in section  # the impacting sphere is never cut
+    motion = grid.split("motion (sampled):")[1].split("ranges")[0]
+    assert _covered(motion) >= set(range(1, 26)) | {86} and len(grid) < 4000

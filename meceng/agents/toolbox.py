@@ -19,7 +19,8 @@ import numpy as np
 
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.inspect import snapshot as pictures
-from meceng.agents.inspect.answer import QUANTITIES, Ask, render
+from meceng.agents.inspect.answer import render
+from meceng.agents.inspect.bodies import QUANTITIES, Ask
 from meceng.agents.inspect.view import build_view
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
