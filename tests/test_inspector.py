@@ -123,7 +123,7 @@ async def test_the_inertia_box_is_the_bodys_own() -> None:
     """Physics: a homogeneous cuboid's inertia-equivalent box is the cuboid itself."""
     instance = default_registry().get(ROBOT).instance(0)
     run = await execute(instance.reference_program, instance.sim.block(), ExecutionLimits(inspect_times=(0.5,)))
-    view = build_view(run.items, run.system, run.inspection, run.trajectory)
+    view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
     p = instance.params
     half = box_half_sizes(view.body(2))
     assert sorted(2 * half) == pytest.approx(sorted([p["length2"], 0.05, 0.05]), rel=1e-9)

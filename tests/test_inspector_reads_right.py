@@ -43,7 +43,7 @@ async def _view(slug: str, times: tuple[float, ...] | None = None, program: str 
     instance = _instance(slug)
     run = await execute(program or instance.reference_program, instance.sim.block(),
                         ExecutionLimits(inspect_times=times or (instance.sim.end_time,)))
-    return build_view(run.items, run.system, run.inspection, run.trajectory)
+    return build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
 
 
 def _line(text: str, start: str) -> str:
@@ -123,3 +123,29 @@ async def test_the_default_answer_shows_every_body_of_the_car_and_of_the_largest
     assert "#86 MassPoint: mass 0.823" in section  # the impacting sphere is never cut
     motion = grid.split("motion (sampled):")[1].split("ranges")[0]
     assert _covered(motion) >= set(range(1, 26)) | {86} and len(grid) < 4000
+
+
+async def test_a_rolling_wheel_reads_as_a_rotation_about_its_axle() -> None:
+    """Rolling without slip: the disc turns by -(v/r)·t about its local x axis (the axle), whose
+    direction stays (cos psi, sin psi, 0); the sampled states and the range say the same."""
+    p = _instance(DISC).params
+    rate = p["velocity"] / p["radius"]
+    psi = np.radians(p["heading_deg"])
+    text = await _simulate(DISC)
+    assert "angles (" not in text and "Tait-Bryan" not in text
+    for t in (1.0, 2.0):
+        line = next(x for x in text.splitlines() if x.strip().startswith(f"t={num(t)} #1 RigidBody"))
+        turned = float(re.search(r"turned ([-\d.e+]+) rad \([-\d.e+]+ turns\) about local x", line).group(1))
+        assert turned == pytest.approx(-rate * t, rel=1e-3)
+        assert f"x→{vec((np.cos(psi), np.sin(psi), 0.0))}" in line
+    low, high = re.search(r"turned about local x \[([-\d.e+]+), ([-\d.e+]+)\]", text).groups()
+    assert float(low) == pytest.approx(-rate * 2.0, rel=1e-3) and float(high) == 0.0
+    # the car's wheels: turned by the distance rolled over the radius, about local y (the axle)
+    car = _instance(CAR).params
+    text = await _simulate(CAR)
+    for wheel in (2, 5):
+        start = re.search(rf"#{wheel} RigidBody: [^\n]*position \(([-\d.e+]+),", text).group(1)
+        line = _line(text, f"t=2 #{wheel} RigidBody")
+        end = re.search(r"position \(([-\d.e+]+),", line).group(1)
+        turned = float(re.search(r"turned ([-\d.e+]+) rad .* about local y", line).group(1))
+        assert turned == pytest.approx((float(end) - float(start)) / car["wheel_radius"], rel=2e-3)

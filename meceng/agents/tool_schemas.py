@@ -14,7 +14,8 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "name": "simulate",
         "description": ("Run a complete Exudyn program and report what it built and how it moved, in the "
                         "description's terms (global frame, SI units, the catalog's component names): every body "
-                        "with mass, centre of mass, principal inertia, initial position, angles and velocities; "
+                        "with mass, centre of mass, inertia, initial position, orientation (local axes in global "
+                        "terms, rotation accumulated about its spin axis) and velocities; "
                         "every connector with the bodies it joins, where, its free and locked directions, its "
                         "parameters; every load with its vector; then the bodies' states at a few times and the "
                         "range of every coordinate over the run. Long lists are cut and say how to ask for more."),

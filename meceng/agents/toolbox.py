@@ -149,7 +149,7 @@ class Toolbox:
         run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
         if run.items is None:
             return json.dumps({"stage": run.stage, "error": _trim(run.error)})
-        view = build_view(run.items, run.system, run.inspection, run.trajectory)
+        view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
         return render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
 
     async def snapshot(self, code: str, time: Any = None) -> ToolResult:
@@ -166,7 +166,7 @@ class Toolbox:
             run = await self._run(code, inspect_times=at)
             if run.items is None:
                 return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))
-            view = build_view(run.items, run.system, run.inspection, run.trajectory)
+            view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
             png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
             text = pictures.describe(view, (0.0, at[0]))
             if run.error:
@@ -234,7 +234,8 @@ def _rounded(value: Any) -> Any:
 def _ask(arguments: dict[str, Any]) -> Ask:
     bodies = tuple(int(b) for b in arguments.get("bodies") or () if str(b).lstrip("#").isdigit()
                    for b in [str(b).lstrip("#")])
-    quantities = tuple(q for q in arguments.get("quantities") or () if q in QUANTITIES) or QUANTITIES
+    asked = ["orientation" if q == "angles" else q for q in arguments.get("quantities") or ()]  # the old name
+    quantities = tuple(q for q in asked if q in QUANTITIES) or QUANTITIES
     return Ask(bodies=bodies, quantities=quantities)
 
 

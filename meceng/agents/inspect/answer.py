@@ -10,7 +10,8 @@ from __future__ import annotations
 from collections import defaultdict
 
 from meceng.agents.inspect.bodies import Ask, bodies_section, motion_section, ranges_section
-from meceng.agents.inspect.system import ANGLES, Connector, Load, SystemView
+from meceng.agents.inspect.orientation import CONVENTION
+from meceng.agents.inspect.system import Connector, Load, SystemView
 from meceng.agents.inspect.words import connector_line as _connector_line
 from meceng.agents.inspect.words import name_of as _name_of
 from meceng.agents.inspect.words import num, vec
@@ -32,7 +33,7 @@ def render(view: SystemView, stage: str, error: str | None, ask: Ask | None = No
     """The inspector's answer for one run of the program."""
     ask = ask or Ask()
     lines = [f"stage: {stage}" + (f"; error: {error}" if error else " (no error)"),
-             f"conventions: global frame, SI units; positions are centres of mass; {ANGLES}"]
+             f"conventions: global frame, SI units; positions are centres of mass; {CONVENTION}"]
     movers = view.moving_bodies()
     counts: dict[str, int] = defaultdict(int)
     for item in (*view.bodies, *view.connectors):

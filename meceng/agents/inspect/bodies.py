@@ -15,10 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from meceng.agents.inspect.orientation import axes_text, turned_text
 from meceng.agents.inspect.system import Body, BodyState, SystemView
 from meceng.agents.inspect.words import name_of, num, vec
 
-QUANTITIES = ("position", "angles", "velocity", "angular_velocity")
+QUANTITIES = ("position", "orientation", "velocity", "angular_velocity")
 FAMILY = 4  # alike bodies folded into one line in a large system
 MOTION_LINES = 24  # single bodies' lines in the default motion section
 HINT = "call again with bodies=[#numbers] to see them one by one"
@@ -48,12 +49,15 @@ def numbers(indices: Sequence[int]) -> str:
     return ", ".join(f"#{r[0]}–#{r[-1]}" if len(r) > 2 else ", ".join(f"#{i}" for i in r) for r in runs)
 
 
-def state_text(body: Body, state: BodyState, quantities: Sequence[str]) -> str:
+def state_text(view: SystemView, body: Body, state: BodyState, quantities: Sequence[str]) -> str:
     parts = []
     if "position" in quantities:
         parts.append(f"position {vec(state.position)}")
-    if "angles" in quantities and state.angles is not None and body.kind != "MassPoint":
-        parts.append(f"angles {vec(state.angles)}")
+    if "orientation" in quantities and state.rotation is not None and body.kind != "MassPoint":
+        parts.append(axes_text(state.rotation))
+        turned = turned_text(view.spins.get(body.index), state.t)
+        if turned:
+            parts.append(turned)
     if "velocity" in quantities and state.velocity is not None:
         parts.append(f"velocity {vec(state.velocity)}")
     if "angular_velocity" in quantities and state.angular_velocity is not None and body.kind != "MassPoint":
@@ -61,7 +65,7 @@ def state_text(body: Body, state: BodyState, quantities: Sequence[str]) -> str:
     return ", ".join(parts)
 
 
-def body_line(body: Body, quantities: Sequence[str]) -> str:
+def body_line(view: SystemView, body: Body, quantities: Sequence[str]) -> str:
     facts = []
     if body.mass is not None:
         facts.append(f"mass {num(body.mass)}")
@@ -72,7 +76,7 @@ def body_line(body: Body, quantities: Sequence[str]) -> str:
         facts.append(f"principal inertia {vec(body.principal_inertia)}")
     start = body.state_at(0.0)
     if start is not None:
-        facts.append(state_text(body, start, quantities))
+        facts.append(state_text(view, body, start, quantities))
     return f"{body.label}: " + ", ".join(f for f in facts if f)
 
 
@@ -124,7 +128,7 @@ def bodies_section(view: SystemView, shown: list[Body], ask: Ask) -> list[str]:
     singles, families = split(view, shown, ask)
     lines = ["bodies at t = 0:"]
     limit = len(singles) if ask.focused else ask.max_items
-    lines += [f"  {body_line(b, ask.quantities)}" for b in singles[:limit]]
+    lines += [f"  {body_line(view, b, ask.quantities)}" for b in singles[:limit]]
     if len(singles) > limit:
         left = [b.index for b in singles[limit:]]
         lines.append(f"  … {len(left)} more bodies not shown here ({numbers(left)}): {HINT}")
@@ -143,7 +147,7 @@ def motion_section(view: SystemView, shown: list[Body], ask: Ask, end_time: floa
         for body in singles[:per_time]:
             state = body.state_at(t)
             if state is not None:
-                out.append(f"  t={num(state.t)} {body.label}: {state_text(body, state, ask.quantities)}")
+                out.append(f"  t={num(state.t)} {body.label}: {state_text(view, body, state, ask.quantities)}")
         out += [f"  t={num(t)} {family_line(members, t)}" for members in families]
         if len(singles) > per_time:
             left = [b.index for b in singles[per_time:]]

@@ -2,7 +2,7 @@
 
 Built from one execution of the program alone (its captured items, the inspector's states and its
 trajectory), never from a ground truth. Everything is in the global frame and SI units; a body's
-position is its centre of mass; orientations are Tait-Bryan angles (see ``ANGLES``).
+position is its centre of mass; orientation is said as ``orientation.py`` says it.
 """
 
 from __future__ import annotations
@@ -12,10 +12,19 @@ import re
 from typing import Any
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from meceng.agents.inspect.geometry import sphere_triangle
-from meceng.agents.inspect.system import Body, BodyState, Connector, CoordinateRange, Load, SystemView, direction
+from meceng.agents.inspect.orientation import spins
+from meceng.agents.inspect.system import (
+    Body,
+    BodyState,
+    Connector,
+    CoordinateRange,
+    Load,
+    Spin,
+    SystemView,
+    direction,
+)
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
 
 #: Item keys that are bookkeeping, not physics; left out of a connector's parameters.
@@ -190,14 +199,15 @@ _LENGTH_TYPES = frozenset({"ConnectorSpringDamper", "ConnectorDistance", "Contac
 
 _NODE_COORDINATES = {
     "Point": ("x", "y", "z"), "Point2D": ("x", "y"), "RigidBody2D": ("x", "y", "phi"),
-    "RigidBodyRxyz": ("x", "y", "z", "rx", "ry", "rz"), "RigidBodyEP": ("x", "y", "z"),
+    "RigidBodyRxyz": ("x", "y", "z"), "RigidBodyEP": ("x", "y", "z"),
     "RigidBodyRotVecLG": ("x", "y", "z"), "RigidBodyRotVec": ("x", "y", "z"),
 }
 
 
 def _ranges(bodies: tuple[Body, ...], nodes: list[dict[str, Any]], ode2: dict[str, int],
-            trajectory: np.ndarray | None) -> tuple[CoordinateRange, ...]:
-    """Per body coordinate, its range over the whole run (reference point; EP rotations as angles)."""
+            trajectory: np.ndarray | None, spins: dict[int, Spin]) -> tuple[CoordinateRange, ...]:
+    """Per body coordinate, its range over the whole run (reference point; a 3D rotation as the
+    rotation accumulated about the body axis it turns about most)."""
     if trajectory is None or not len(trajectory):
         return ()
     out = []
@@ -211,16 +221,16 @@ def _ranges(bodies: tuple[Body, ...], nodes: list[dict[str, Any]], ode2: dict[st
             if start + k < trajectory.shape[1]:
                 column = trajectory[:, start + k]
                 out.append(CoordinateRange(body.index, name, float(column.min()), float(column.max())))
-        if node_type == "RigidBodyEP" and start + 7 <= trajectory.shape[1]:
-            ep = trajectory[:, start + 3:start + 7]
-            angles = np.unwrap(Rotation.from_quat(np.column_stack([ep[:, 1:], ep[:, 0]])).as_euler("XYZ"), axis=0)
-            for k, name in enumerate(("rx", "ry", "rz")):
-                out.append(CoordinateRange(body.index, name, float(angles[:, k].min()), float(angles[:, k].max())))
+        if body.index in spins and np.ptp(spins[body.index].angles) > 1e-9:
+            angles = spins[body.index].angles
+            out.append(CoordinateRange(body.index, f"turned about {spins[body.index].name}", float(angles.min()),
+                                       float(angles.max())))
     return tuple(out)
 
 
 def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
-               inspection: dict[str, Any] | None, trajectory: np.ndarray | None = None) -> SystemView:
+               inspection: dict[str, Any] | None, trajectory: np.ndarray | None = None,
+               times: np.ndarray | None = None) -> SystemView:
     """The program's system as the inspector shows it and the snapshot draws it."""
     inspection = inspection or {}
     objects = items.get("objects", [])
@@ -268,10 +278,12 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
     marker_rotations = tuple({int(m): r for m, v in s.get("markers", {}).items()
                               if (r := _rotation(v.get("R"))) is not None} for s in states)
     view_bodies = tuple(bodies)
+    ode2 = inspection.get("ode2", {})
+    turns = spins(view_bodies, nodes, ode2, trajectory, times)
     return SystemView(view_bodies, tuple(connectors), tuple(loads), tuple(float(s["t"]) for s in states),
-                      _ranges(view_bodies, nodes, inspection.get("ode2", {}), trajectory),
+                      _ranges(view_bodies, nodes, ode2, trajectory, turns),
                       _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
-                      marker_rotations)
+                      marker_rotations, turns)
 
 
 def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, tuple[float, ...] | str], ...]:
