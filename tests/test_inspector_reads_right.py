@@ -149,3 +149,36 @@ async def test_a_rolling_wheel_reads_as_a_rotation_about_its_axle() -> None:
         end = re.search(r"position \(([-\d.e+]+),", line).group(1)
         turned = float(re.search(r"turned ([-\d.e+]+) rad .* about local y", line).group(1))
         assert turned == pytest.approx((float(end) - float(start)) / car["wheel_radius"], rel=2e-3)
+
+
+ROBOT = "rrr_articulated_robot_with_3d_cubic_trajectory"
+TILTED = '''
+import exudyn as exu
+from exudyn.utilities import *
+import numpy as np
+SC = exu.SystemContainer()
+mbs = SC.AddSystem()
+inertia = InertiaCuboid(density=1000.0, sideLengths=[0.6, 0.1, 0.2]).Rotated(RotationMatrixZ(np.pi / 6))
+mbs.CreateRigidBody(referencePosition=[0, 0, 0], inertia=inertia)
+mbs.Assemble()
+'''
+
+
+async def test_inertia_is_given_in_body_axes_with_the_principal_directions() -> None:
+    """A link whose length lies along local y reads as a small Iyy (homogeneous cuboid:
+    I_yy = m(w² + w²)/12); a tensor turned about z names its principal axes' directions."""
+    instance = _instance(ROBOT)
+    p = instance.params
+    w, length = 0.05, p["length2"]
+    draft = instance.reference_program.replace("sideLengths=[length2, w, w]", "sideLengths=[w, length2, w]")
+    assert draft != instance.reference_program
+    text = await _simulate(ROBOT, program=draft)
+    mass = 2790.0 * w * w * length
+    along_y = (mass * (length**2 + w**2) / 12, mass * 2 * w**2 / 12, mass * (length**2 + w**2) / 12)
+    assert f"Ixx, Iyy, Izz {vec(along_y)}" in _line(text, "#2 RigidBody:")
+    assert _line(text, "#2 RigidBody:") != _line(await _simulate(ROBOT), "#2 RigidBody:")
+    tilted = await _simulate(ROBOT, program=TILTED)
+    line = _line(tilted, "#0 RigidBody:")
+    mass = 1000.0 * 0.6 * 0.1 * 0.2
+    longest = (np.cos(np.pi / 6), np.sin(np.pi / 6), 0.0)  # the 0.6 m side: the smallest moment
+    assert f"principal {num(mass * (0.1**2 + 0.2**2) / 12)} along {vec(longest)}" in line, line

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from meceng.agents.inspect.orientation import axes_text, turned_text
-from meceng.agents.inspect.system import Body, BodyState, SystemView
+from meceng.agents.inspect.system import Body, BodyState, SystemView, direction
 from meceng.agents.inspect.words import name_of, num, vec
 
 QUANTITIES = ("position", "orientation", "velocity", "angular_velocity")
@@ -73,11 +73,35 @@ def body_line(view: SystemView, body: Body, quantities: Sequence[str]) -> str:
         origin = "its floating frame's origin" if body.kind == "FlexibleBody" else "its reference point"
         facts.append(f"centre of mass {vec(body.centre_local)} from {origin} (body axes)")
     if body.principal_inertia is not None:
-        facts.append(f"principal inertia {vec(body.principal_inertia)}")
+        facts.append(inertia_text(body))
     start = body.state_at(0.0)
     if start is not None:
         facts.append(state_text(view, body, start, quantities))
     return f"{body.label}: " + ", ".join(f for f in facts if f)
+
+
+def inertia_text(body: Body) -> str:
+    """Inertia about the centre of mass in the body's own axes (so a link's length along local y
+    shows as a small Iyy), and where the axes are not principal, the principal axes' directions."""
+    tensor = body.inertia_local
+    if tensor is None:
+        return f"inertia about z {vec(body.principal_inertia)}" if body.principal_inertia else ""
+    text = f"inertia about the centre of mass, body axes: Ixx, Iyy, Izz {vec(np.diag(tensor))}"
+    off = (tensor[1, 2], tensor[0, 2], tensor[0, 1])
+    if max(abs(x) for x in off) <= 1e-9 * max(float(np.abs(tensor).max()), 1e-300):
+        return text
+    pairs = zip(body.principal_inertia or (), (body.principal_axes.T if body.principal_axes is not None else ()),
+                strict=False)
+    return (f"{text}, Iyz, Ixz, Ixy {vec(off)}; principal "
+            + ", ".join(f"{num(value)} along {direction(_positive(axis))}" for value, axis in pairs)
+            + " (body axes)")
+
+
+def _positive(axis: np.ndarray) -> tuple[float, ...]:
+    """An eigenvector's sign is arbitrary: its largest component is made positive (deterministic)."""
+    axis = np.where(np.abs(axis) < 1e-12, 0.0, axis)
+    sign = 1.0 if axis[int(np.argmax(np.abs(axis)))] > 0 else -1.0
+    return tuple(float(x) + 0.0 for x in sign * axis)
 
 
 def _signature(body: Body) -> tuple[str, str, str]:
@@ -120,7 +144,7 @@ def family_line(members: list[Body], t: float | None) -> str:
         fastest, body = max(speeds, key=lambda x: x[0])
         facts.append("all at rest" if fastest < 1e-12 else f"fastest #{body.index} at speed {num(fastest)}")
     if t is None and first.principal_inertia is not None:
-        facts.insert(0, f"principal inertia {vec(first.principal_inertia)}")
+        facts.insert(0, inertia_text(first))
     return f"{head}: " + ", ".join(facts)
 
 

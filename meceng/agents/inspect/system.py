@@ -48,6 +48,7 @@ class Body:
     principal_inertia: tuple[float, ...] | None  # about the centre of mass, ascending
     node: int | None
     principal_axes: np.ndarray | None = None  # columns: the principal axes in body coordinates
+    inertia_local: np.ndarray | None = None  # 3x3 about the centre of mass, body axes
     states: tuple[BodyState, ...] = ()
 
     @property

@@ -47,26 +47,27 @@ def _name(item: dict[str, Any]) -> str | None:
     return None if not name or _AUTO_NAME.match(name) else name
 
 
-def _principal_inertia(item: dict[str, Any]) -> tuple[tuple[float, ...] | None, np.ndarray | None]:
+def _principal_inertia(item: dict[str, Any]) -> tuple[tuple[float, ...] | None, np.ndarray | None,
+                                                      np.ndarray | None]:
     """Exudyn keeps a rigid body's inertia about its reference point: moved to the centre of mass,
-    its principal values (ascending) and axes (columns, body coordinates)."""
+    its principal values (ascending), axes (columns, body coordinates) and the tensor in body axes."""
     inertia = _tuple(item.get("inertia"))
     mass = item.get("mass")
     if inertia is None or not isinstance(mass, int | float):
-        return None, None
+        return None, None, None
     if len(inertia) == 1:  # RigidBody2D: one moment about z
-        return inertia, None
+        return inertia, None, None
     if len(inertia) == 9:  # a flexible body's 3x3 matrix, also about its frame's origin
         tensor = np.asarray(inertia).reshape(3, 3)
     elif len(inertia) == 6:
         xx, yy, zz, yz, xz, xy = inertia
         tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
     else:
-        return None, None
+        return None, None, None
     c = np.asarray(_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3]
     tensor = tensor - float(mass) * (float(c @ c) * _E - np.outer(c, c))
     values, axes = np.linalg.eigh(tensor)
-    return tuple(float(v) for v in values), axes
+    return tuple(float(v) for v in values), axes, tensor
 
 
 def _rotation(value: Any) -> np.ndarray | None:
@@ -249,13 +250,13 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
             if isinstance(node, int | float):
                 node_body.setdefault(int(node), index)
             mass = item.get("mass", item.get("physicsMass"))
-            principal, axes = _principal_inertia(item)
+            principal, axes, tensor = _principal_inertia(item)
             to_centre = _tuple(item.get("centerOfMass")) if kind == "FlexibleBody" else None
             bodies.append(Body(
                 index, kind, str(item.get("objectType")), _name(item),
                 float(mass) if isinstance(mass, int | float) else None,
                 (_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3], principal,
-                int(node) if isinstance(node, int | float) else None, principal_axes=axes,
+                int(node) if isinstance(node, int | float) else None, principal_axes=axes, inertia_local=tensor,
                 states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
