@@ -182,3 +182,17 @@ async def test_inertia_is_given_in_body_axes_with_the_principal_directions() -> 
     mass = 1000.0 * 0.6 * 0.1 * 0.2
     longest = (np.cos(np.pi / 6), np.sin(np.pi / 6), 0.0)  # the 0.6 m side: the smallest moment
     assert f"principal {num(mass * (0.1**2 + 0.2**2) / 12)} along {vec(longest)}" in line, line
+
+
+async def test_load_counts_match_the_load_lines() -> None:
+    """The car: gravity on each of the five bodies is five loads, and the two torques two; the
+    count and the list agree and no line is cut."""
+    text = await _simulate(CAR)
+    assert "7 loads (5 Gravity, 2 Torque)" in _line(text, "system:")
+    section = text.split("\nloads")[1].split("\nmotion")[0]
+    counts = [int(n) for n in re.findall(r"^  (\d+) × ", section, flags=re.M)]
+    singles = len(re.findall(r"^  (?!\d+ × )\S", section, flags=re.M))
+    assert sum(counts) + singles == 7 and "more" not in section
+    gravity = _line(section, "5 × Gravity")
+    assert _covered(gravity.split("one on each of")[1]) == {1, 2, 3, 4, 5}
+    assert _covered(_line(section, "2 × Torque").split("one on each of")[1]) == {4, 5}

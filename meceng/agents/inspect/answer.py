@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 
-from meceng.agents.inspect.bodies import Ask, bodies_section, motion_section, ranges_section
+from meceng.agents.inspect.bodies import Ask, bodies_section, motion_section, numbers, ranges_section
 from meceng.agents.inspect.orientation import CONVENTION
 from meceng.agents.inspect.system import Connector, Load, SystemView
 from meceng.agents.inspect.words import connector_line as _connector_line
@@ -39,9 +39,13 @@ def render(view: SystemView, stage: str, error: str | None, ask: Ask | None = No
     for item in (*view.bodies, *view.connectors):
         counts[item.kind] += 1
     total = sum(b.mass for b in movers if b.mass is not None)
+    load_counts: dict[str, int] = defaultdict(int)
+    for load in view.loads:
+        load_counts[load.kind.split(" (")[0]] += 1
+    per_kind = f" ({', '.join(f'{n} {k}' for k, n in load_counts.items())})" if view.loads else ""
     lines.append(f"system: {', '.join(f'{n} {k}' for k, n in counts.items())}; "
-                 f"{len(view.loads)} loads; degrees of freedom {view.degrees_of_freedom}, redundant constraints "
-                 f"{view.redundant_constraints}; total mass {num(total)}")
+                 f"{len(view.loads)} loads{per_kind}; degrees of freedom {view.degrees_of_freedom}, "
+                 f"redundant constraints {view.redundant_constraints}; total mass {num(total)}")
     shown = [b for b in movers if not ask.focused or b.index in ask.bodies]
     lines += bodies_section(view, shown, ask)
     grounds = [b for b in view.bodies if b.is_ground]
@@ -92,16 +96,20 @@ def _loads(view: SystemView, ask: Ask) -> list[str]:
             vector = vec(load.vector)
         fixed = " (body-fixed)" if load.body_fixed else ""
         groups[(load.kind, vector + fixed)].append(load.body)
-    out = ["loads:"]
+    out = ["loads (one line per load, or per loads alike, with how many):"]
     for (kind, vector), bodies in groups.items():
         if vector.startswith("#"):
             _, _, rest = vector.partition(" ")
             out.append(f"  {kind} on {_name_of(view, bodies[0])}: {rest}")
             continue
-        targets = ", ".join(_name_of(view, b) for b in bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4
-                                                                      else "")
-        out.append(f"  {kind} {vector} on {targets}")
-    return out
+        if len(bodies) == 1:
+            out.append(f"  {kind} {vector} on {_name_of(view, bodies[0])}")
+            continue
+        on = [b for b in bodies if b is not None]
+        targets = numbers(sorted(on)) + (f" and {len(bodies) - len(on)} node coordinates" if len(on) < len(bodies)
+                                         else "")
+        out.append(f"  {len(bodies)} × {kind} {vector}, one on each of {targets}")
+    return _cut(out, ask.max_items + 1, "load lines", "call again with bodies=[#numbers]")
 
 
 def _load_values(load: Load) -> str:
