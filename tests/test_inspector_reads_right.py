@@ -196,3 +196,27 @@ async def test_load_counts_match_the_load_lines() -> None:
     gravity = _line(section, "5 × Gravity")
     assert _covered(gravity.split("one on each of")[1]) == {1, 2, 3, 4, 5}
     assert _covered(_line(section, "2 × Torque").split("one on each of")[1]) == {4, 5}
+
+
+async def test_a_rolling_disc_is_placed_at_its_contact_point_with_what_it_locks() -> None:
+    """The car's wheels touch the plane z = 0 straight below their centres; the left ones lock all
+    three directions, the front-right lateral slip is free, the rear-right only rolls (the
+    description's constrainedAxes); the picture puts the contact there, at every time."""
+    p = _instance(CAR).params
+    text = await _simulate(CAR)
+    half_length, half_track = p["wheelbase"] / 2, p["track"] / 2
+    expected = {10: ((half_length, half_track, 0), "lateral y, longitudinal x, normal z", ""),
+                11: ((half_length, -half_track, 0), "longitudinal x, normal z", "lateral y"),
+                13: ((-half_length, -half_track, 0), "longitudinal x", "lateral y, normal z")}
+    for number, (contact, locked, free) in expected.items():
+        line = _line(text, f"#{number} RollingDisc:")
+        assert f"contact point {vec(contact)} on the plane through (0, 0, 0) with normal z" in line, line
+        assert f"axle y, radius {num(p['wheel_radius'])}" in line
+        assert f"locked at the contact point (velocity): {locked}," in line
+        assert (f"translation {free}" in line) if free else "translation" not in line
+    view = await _view(CAR)
+    for t in view.times:
+        wheel = view.body(2).state_at(t)
+        below = (wheel.position[0], wheel.position[1], 0.0)
+        joints = [s.points[0] for s in build_scene(view, t) if s.kind == "point" and s.role == "joint"]
+        assert any(np.allclose(point, below, atol=1e-6) for point in joints), (t, joints)

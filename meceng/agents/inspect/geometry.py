@@ -73,3 +73,57 @@ def sphere_triangle(item: dict[str, Any], centre: Any, triangle_origin: Any, tri
     side = float((centre - corners[0]) @ normal)
     return {"triangle_local": local, "corners": corners, "normal": normal, "radius": radius,
             "side": 1.0 if side >= 0 else -1.0, "gap": distance_to_triangle(centre, corners) - radius}
+
+
+_ROLLING = ("lateral", "longitudinal", "normal")
+
+
+def rolling_frame(geometry: dict[str, Any], centre: Any, disc_rotation: np.ndarray | None) -> dict[str, Any]:
+    """Where a rolling disc touches its plane, and the three directions there: longitudinal (the
+    rolling direction, axle × normal), lateral (in the plane, across it) and the plane's normal."""
+    if centre is None or len(centre) < 3:
+        return {}
+    axis = np.asarray(geometry["axis_local"], dtype=float)
+    axis = axis if disc_rotation is None else np.asarray(disc_rotation) @ axis
+    axis = axis / (np.linalg.norm(axis) or 1.0)
+    normal = np.asarray(geometry["normal"], dtype=float)
+    down = -(normal - float(normal @ axis) * axis)  # in the disc's plane, towards the rolling plane
+    down = down / (np.linalg.norm(down) or 1.0)
+    contact = np.asarray(centre, dtype=float)[:3] + geometry["radius"] * down
+    longitudinal = np.cross(axis, normal)
+    longitudinal = longitudinal / (np.linalg.norm(longitudinal) or 1.0)
+    lateral = np.cross(normal, longitudinal)
+    return {"contact": contact, "axis": axis, "directions": (lateral, longitudinal, normal),
+            "height": float((contact - np.asarray(geometry["plane_point"], dtype=float)) @ normal)}
+
+
+def rolling_disc(item: dict[str, Any], plane_origin: Any, plane_rotation: np.ndarray | None) -> dict[str, Any]:
+    """A rolling disc's plane (global), axle (disc axes), radius and which directions it locks."""
+    normal = np.asarray(item.get("planeNormal") or (0.0, 0.0, 1.0), dtype=float)
+    normal = normal if plane_rotation is None else np.asarray(plane_rotation) @ normal
+    flags = [int(x) for x in np.ravel(item.get("constrainedAxes") or (1, 1, 1))][:3]
+    return {"axis_local": tuple(float(x) for x in np.ravel(item.get("discAxis") or (1.0, 0.0, 0.0))),
+            "normal": normal / (np.linalg.norm(normal) or 1.0), "radius": float(item.get("discRadius") or 0.0),
+            "plane_point": np.asarray(plane_origin if plane_origin is not None else (0.0, 0.0, 0.0), dtype=float),
+            "locked": tuple(bool(f) for f in flags)}
+
+
+def rolling_words(geometry: dict[str, Any], frame: dict[str, Any], vec: Any, direction: Any) -> list[str]:
+    """The disc's contact in words: point, plane, axle, and what is locked and free there."""
+    if not frame:
+        return []
+    said = [f"{name} {direction(_unit(d))}" for name, d in zip(_ROLLING, frame["directions"], strict=True)]
+    locked = [s for s, flag in zip(said, geometry["locked"], strict=True) if flag]
+    free = [s for s, flag in zip(said, geometry["locked"], strict=True) if not flag]
+    words = [f"contact point {vec(frame['contact'])} on the plane through {vec(geometry['plane_point'])} with "
+             f"normal {direction(_unit(geometry['normal']))} (height above it {vec([frame['height']])[1:-1]}), "
+             f"axle {direction(_unit(frame['axis']))}, radius {vec([geometry['radius']])[1:-1]}",
+             "locked at the contact point (velocity): " + (", ".join(locked) or "nothing"),
+             "free: rotation about every axis (rolls about the axle)" + ("; translation " + ", ".join(free)
+                                                                        if free else "")]
+    return words
+
+
+def _unit(v: Any) -> tuple[float, ...]:
+    v = np.where(np.abs(np.asarray(v, dtype=float)) < 1e-12, 0.0, np.asarray(v, dtype=float))
+    return tuple(float(x) + 0.0 for x in v / (np.linalg.norm(v) or 1.0))

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.geometry import placed
+from meceng.agents.inspect.geometry import placed, rolling_frame
 from meceng.agents.inspect.system import Body, BodyState, Connector, SystemView
 
 Point = tuple[float, float, float]
@@ -134,7 +134,9 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
     shapes: list[Shape] = []
     for c in view.connectors:
         points = connector_points(view, c, k)
-        if c.kind in JOINTS and points:
+        if "axis_local" in c.geometry and len(points) == 2:
+            shapes += _rolling_shapes(view, c, k, points[1])
+        elif c.kind in JOINTS and points:
             shapes.append(Shape("point", "joint", (points[0],)))
             if c.axis is not None and k == 0:
                 a = np.asarray(c.axis[:3]) * 0.12 * size
@@ -167,6 +169,20 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
         tail = np.asarray(state.position[:3])
         shapes.append(Shape("arrow", "load", (_p(tail), _p(tail + np.asarray(load.vector[:3]) / norm * 0.15 * size))))
     return tuple(shapes)
+
+
+def _rolling_shapes(view: SystemView, c: Connector, k: int, centre: Point) -> list[Shape]:
+    """A rolling disc: its contact point, the axle through the centre, a patch of the plane it rolls on."""
+    rotation = (view.marker_rotations[k] if k < len(view.marker_rotations) else {}).get(c.markers[1])
+    frame = rolling_frame(c.geometry, centre, rotation)
+    if not frame:
+        return []
+    contact, r = frame["contact"], 1.3 * c.geometry["radius"]
+    lateral, longitudinal, _ = frame["directions"]
+    patch = [contact + r * (a * longitudinal + b * lateral) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    axle = frame["axis"] * 0.6 * c.geometry["radius"]
+    return [Shape("box", "ground", tuple(_p(p) for p in patch)), Shape("point", "joint", (_p(contact),)),
+            Shape("line", "joint", (_p(np.asarray(centre) - axle), _p(np.asarray(centre) + axle)))]
 
 
 def _contact_shapes(view: SystemView, c: Connector, k: int, points: list[Point]) -> list[Shape]:

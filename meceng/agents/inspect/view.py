@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.geometry import sphere_triangle
+from meceng.agents.inspect.geometry import rolling_disc, sphere_triangle
 from meceng.agents.inspect.orientation import spins
 from meceng.agents.inspect.system import (
     Body,
@@ -130,6 +130,9 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
     shape: dict[str, Any] = {}
     if exudyn_type == "ContactSphereTriangle" and len(numbers) == 2:
         shape = sphere_triangle(item, points[0], points[1], _rotation(marker_t0.get(numbers[1], {}).get("R")))
+    if exudyn_type == "JointRollingDisc" and len(numbers) == 2:
+        shape = rolling_disc(item, points[0], frame)
+        shape["disc_rotation"] = _rotation(marker_t0.get(numbers[1], {}).get("R"))
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
                      free, locked, parameters, derived, tuple(numbers), shape)
 
@@ -186,8 +189,6 @@ def _semantics(exudyn_type: str, item: dict[str, Any], frame: np.ndarray | None,
 
         free = said(False) + (["all rotations"] if exudyn_type == "JointSpherical" else [])
         return None, "; ".join(free) or "nothing", "; ".join(said(True)) or "nothing", derived
-    if exudyn_type == "JointRollingDisc":
-        return _tuple(item.get("discAxis")), "rolling without slip", "", derived
     if exudyn_type == "ContactSphereSphere" and "initial_length" in derived:
         radii = _tuple(item.get("spheresRadii")) or (0.0, 0.0)
         derived["initial_gap"] = derived["initial_length"] - sum(radii[:2])

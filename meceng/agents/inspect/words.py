@@ -7,6 +7,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from meceng.agents.inspect.geometry import rolling_frame, rolling_words
 from meceng.agents.inspect.system import Connector, SystemView, direction
 
 
@@ -33,6 +34,9 @@ def connector_line(view: SystemView, c: Connector) -> str:
     points = [p for p in c.points if p is not None]
     if "corners" in c.geometry:
         facts.append(_triangle(c))
+    elif "axis_local" in c.geometry:
+        facts += rolling_words(c.geometry, rolling_frame(c.geometry, c.points[1], c.geometry.get("disc_rotation")),
+                               vec, direction)
     elif points:
         same = len(points) == 2 and np.allclose(points[0], points[1], atol=1e-9)
         facts.append(f"at {vec(points[0])}" if same or len(points) == 1 else "at " + " and ".join(map(vec, points)))
