@@ -18,7 +18,7 @@ import pytest
 from fake_ollama import FakeOllama, chat_reply
 
 from meceng.agents.inspect.answer import num
-from meceng.agents.inspect.scene import box_half_sizes
+from meceng.agents.inspect.forms import box_half_sizes
 from meceng.agents.inspect.view import build_view
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox

@@ -220,3 +220,38 @@ async def test_a_rolling_disc_is_placed_at_its_contact_point_with_what_it_locks(
         below = (wheel.position[0], wheel.position[1], 0.0)
         joints = [s.points[0] for s in build_scene(view, t) if s.kind == "point" and s.role == "joint"]
         assert any(np.allclose(point, below, atol=1e-6) for point in joints), (t, joints)
+
+
+async def test_the_snapshot_draws_bodies_by_their_inertia_and_joints_at_every_time() -> None:
+    """The pendulum's bob is a sphere of its radius (I = 2/5 m r²), the car's wheels are discs of
+    their radius, the joints' axes are drawn at the later time too (turned with the chassis), a
+    spherical joint is drawn unlike a revolute one, and the tool says what its picture shows."""
+    r = _instance(WALL).params["radius"]
+    wall = await _view(WALL)
+    for t in wall.times:
+        bob = [s for s in build_scene(wall, t) if s.role == "body" and s.kind == "circle"]
+        assert len(bob) == 1 and bob[0].radius == pytest.approx(r, rel=1e-6)
+    car = await _view(CAR)
+    radius = _instance(CAR).params["wheel_radius"]
+    end = build_scene(car, car.times[-1])
+    wheel = car.body(2).state_at(car.times[-1])
+    outline = [s for s in end if s.kind == "box" and s.role == "body"
+               and np.allclose(np.mean(s.points, axis=0), wheel.position, atol=1e-9)]
+    assert outline and max(np.hypot(p[0] - wheel.position[0], p[2] - wheel.position[2])
+                           for p in outline[0].points) == pytest.approx(radius, rel=1e-6)
+    revolute_points = [c.points[0] for c in car.connectors if c.kind == "RevoluteJoint"]
+    axes = [s for s in end if s.kind == "line" and s.role == "joint"]
+    for point in revolute_points:  # at t = 2 the joints are 18 m further: their axes drawn there
+        moved = np.asarray(point) + np.subtract(wheel.position, car.body(2).state_at(0.0).position) * (1, 0, 0)
+        assert any(np.allclose(np.mean(s.points, axis=0), moved, atol=1e-3) for s in axes), point
+    gyro = await _view("gyroscope_on_spherical_joint")
+    roles = {s.role for s in build_scene(gyro, 0.0) if s.kind == "point"}
+    assert "spherical" in roles
+    from meceng.agents.inspect.snapshot import spread_labels
+
+    apart = spread_labels([(np.zeros(2), "#1"), (np.zeros(2), "#2")], np.ones(2))
+    assert apart[0][0] != apart[1][0]
+    instance = _instance(WALL)
+    said = (await Toolbox(instance, rigid_catalog(), vision=True).call(
+        "snapshot", {"code": instance.reference_program})).text
+    assert "t = 0 s (top row) and t = 1.5 s" in said and "1 body (1 as sphere)" in said

@@ -160,6 +160,7 @@ class Toolbox:
             interfaces = ((run.part or {}).get("geometry") or {}).get("interfaces") or {}
             png = pictures.draw_part(run.surface, interfaces)
             text = pictures.describe_part(run.surface, interfaces)
+            said = "the picture of your part from the top, the front, the side and isometric: " + text.splitlines()[0]
         else:
             end = self._end_time()
             at = _clip(_times(time), end)[:1] or (end,)
@@ -169,10 +170,13 @@ class Toolbox:
             view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
             png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
             text = pictures.describe(view, (0.0, at[0]))
+            stamps = [view.times[pictures.sample_index(view, t)] if view.times else 0.0 for t in (0.0, at[0])]
+            said = "the picture of your program's system: " + pictures.caption(view, stamps)
             if run.error:
                 text = f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}\n" + text
+                said = text.splitlines()[0] + "\n" + said
         if self.vision:
-            return ToolResult("the picture of your program's system follows", (base64.b64encode(png).decode(),))
+            return ToolResult(said, (base64.b64encode(png).decode(),))
         return ToolResult("the picture in words (this model takes no images):\n" + text)
 
     async def self_check(self, code: str) -> dict[str, Any]:
