@@ -255,3 +255,18 @@ async def test_the_snapshot_draws_bodies_by_their_inertia_and_joints_at_every_ti
     said = (await Toolbox(instance, rigid_catalog(), vision=True).call(
         "snapshot", {"code": instance.reference_program})).text
     assert "t = 0 s (top row) and t = 1.5 s" in said and "1 body (1 as sphere)" in said
+
+
+async def test_self_check_answers_in_words() -> None:
+    """Like every other tool: no JSON, each finding on a line, the energy balance said; a program
+    with a NaN from the start is reported as such."""
+    instance = _instance("single_pendulum")
+    toolbox = Toolbox(instance, rigid_catalog())
+    text = (await toolbox.call("self_check", {"code": instance.reference_program})).text
+    assert text.startswith("stage: solved; degrees of freedom ") and "{" not in text
+    assert "findings:\n  - no problem found" in text
+    change = float(re.search(r"a relative change of ([-\d.e+]+) %", text).group(1))
+    assert abs(change) < 1.0  # an undamped pendulum keeps its energy
+    broken = instance.reference_program.replace("mbs.Assemble()", "mbs.Assemble()\nraise ValueError('late')")
+    words = (await toolbox.call("self_check", {"code": broken})).text
+    assert "findings:\n  - " in words and "{" not in words

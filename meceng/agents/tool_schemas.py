@@ -44,7 +44,7 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "name": "self_check",
         "description": ("Check a program for problems that need no reference solution: errors, redundant "
                         "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
-                        "Returns the degrees of freedom and a list of findings."),
+                        "Answers in words: the degrees of freedom, the findings one a line, the energy balance."),
         "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
     },
     {

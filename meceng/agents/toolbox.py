@@ -78,7 +78,7 @@ class Toolbox:
             if name == "snapshot":
                 return await self.snapshot(str(arguments["code"]), arguments.get("time"))
             if name == "self_check":
-                return ToolResult(json.dumps(await self.self_check(str(arguments["code"]))))
+                return ToolResult(self_check_words(await self.self_check(str(arguments["code"]))))
             if name == "list_components":
                 return ToolResult(self.catalog.menu())
             if name == "component_docs":
@@ -206,6 +206,18 @@ class Toolbox:
                                 "note": ("kinetic + spring + gravity/constant-force potential; a system without "
                                          "damping, contact losses or driving loads should keep it nearly constant")}
         return report
+
+
+def self_check_words(report: dict[str, Any]) -> str:
+    """The self-check in words, like the other tools' answers: stage, degrees of freedom, each
+    finding on its own line, the energy balance with its relative change."""
+    lines = [f"stage: {report['stage']}; degrees of freedom {report.get('degrees_of_freedom')}", "findings:"]
+    lines += [f"  - {finding}" for finding in report["findings"]]
+    energy = report.get("energy")
+    if energy is not None:
+        lines.append(f"energy ({energy['note']}): {energy['start']:.6g} J at t = 0, {energy['end']:.6g} J at the "
+                     f"end, a relative change of {100 * energy['relative_change']:.3g} %")
+    return "\n".join(lines)
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:
