@@ -210,9 +210,9 @@ async def test_a_rolling_disc_is_placed_at_its_contact_point_with_what_it_locks(
                 13: ((-half_length, -half_track, 0), "longitudinal x", "lateral y, normal z")}
     for number, (contact, locked, free) in expected.items():
         line = _line(text, f"#{number} RollingDisc:")
-        assert f"contact point {vec(contact)} on the plane through (0, 0, 0) with normal z" in line, line
+        assert f"contact point {vec(contact)} (height 0 above the plane through (0, 0, 0), normal z)" in line, line
         assert f"axle y, radius {num(p['wheel_radius'])}" in line
-        assert f"locked at the contact point (velocity): {locked}," in line
+        assert f"locked there: {locked}," in line
         assert (f"translation {free}" in line) if free else "translation" not in line
     view = await _view(CAR)
     for t in view.times:

@@ -33,7 +33,8 @@ def render(view: SystemView, stage: str, error: str | None, ask: Ask | None = No
     """The inspector's answer for one run of the program."""
     ask = ask or Ask()
     lines = [f"stage: {stage}" + (f"; error: {error}" if error else " (no error)"),
-             f"conventions: global frame, SI units; positions are centres of mass; {CONVENTION}"]
+             f"conventions: global frame, SI units; positions are centres of mass; inertia about the centre of mass in "
+             f"body axes; {CONVENTION}"]
     movers = view.moving_bodies()
     counts: dict[str, int] = defaultdict(int)
     for item in (*view.bodies, *view.connectors):
@@ -96,7 +97,7 @@ def _loads(view: SystemView, ask: Ask) -> list[str]:
             vector = vec(load.vector)
         fixed = " (body-fixed)" if load.body_fixed else ""
         groups[(load.kind, vector + fixed)].append(load.body)
-    out = ["loads (one line per load, or per loads alike, with how many):"]
+    out = ["loads (n × : n alike loads, one on each body named):"]
     for (kind, vector), bodies in groups.items():
         if vector.startswith("#"):
             _, _, rest = vector.partition(" ")

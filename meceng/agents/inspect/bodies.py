@@ -86,7 +86,7 @@ def inertia_text(body: Body) -> str:
     tensor = body.inertia_local
     if tensor is None:
         return f"inertia about z {vec(body.principal_inertia)}" if body.principal_inertia else ""
-    text = f"inertia about the centre of mass, body axes: Ixx, Iyy, Izz {vec(np.diag(tensor))}"
+    text = f"inertia Ixx, Iyy, Izz {vec(np.diag(tensor))}"
     off = (tensor[1, 2], tensor[0, 2], tensor[0, 1])
     if max(abs(x) for x in off) <= 1e-9 * max(float(np.abs(tensor).max()), 1e-300):
         return text
@@ -186,7 +186,8 @@ def ranges_section(view: SystemView, shown: list[Body], ask: Ask) -> list[str]:
     singles, families = split(view, shown, ask)
     per_body: dict[int, list[str]] = defaultdict(list)
     for r in view.ranges:
-        per_body[r.body].append(f"{r.name} [{num(r.low)}, {num(r.high)}]")
+        per_body[r.body].append(f"{r.name} = {num(r.low)}" if num(r.low) == num(r.high)
+                                else f"{r.name} [{num(r.low)}, {num(r.high)}]")
     lines = [f"  {name_of(view, b.index)}: " + ", ".join(per_body[b.index]) for b in singles if per_body[b.index]]
     limit = len(lines) if ask.focused else ask.max_items
     if len(lines) > limit:

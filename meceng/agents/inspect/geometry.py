@@ -115,12 +115,11 @@ def rolling_words(geometry: dict[str, Any], frame: dict[str, Any], vec: Any, dir
     said = [f"{name} {direction(_unit(d))}" for name, d in zip(_ROLLING, frame["directions"], strict=True)]
     locked = [s for s, flag in zip(said, geometry["locked"], strict=True) if flag]
     free = [s for s, flag in zip(said, geometry["locked"], strict=True) if not flag]
-    words = [f"contact point {vec(frame['contact'])} on the plane through {vec(geometry['plane_point'])} with "
-             f"normal {direction(_unit(geometry['normal']))} (height above it {vec([frame['height']])[1:-1]}), "
+    words = [f"contact point {vec(frame['contact'])} (height {vec([frame['height']])[1:-1]} above the plane through "
+             f"{vec(geometry['plane_point'])}, normal {direction(_unit(geometry['normal']))}), "
              f"axle {direction(_unit(frame['axis']))}, radius {vec([geometry['radius']])[1:-1]}",
-             "locked at the contact point (velocity): " + (", ".join(locked) or "nothing"),
-             "free: rotation about every axis (rolls about the axle)" + ("; translation " + ", ".join(free)
-                                                                        if free else "")]
+             "locked there: " + (", ".join(locked) or "nothing"),
+             "free: all rotations" + ("; translation " + ", ".join(free) if free else "")]
     return words
 
 

@@ -17,9 +17,9 @@ from scipy.spatial.transform import Rotation
 
 from meceng.agents.inspect.system import Body, Spin, direction
 
-CONVENTION = ("orientation: a body's local axes x, y, z in global terms (the columns of its rotation matrix), "
-              "and the rotation accumulated since t = 0 about the body axis it turns about most (the integral of "
-              "its angular velocity's component along that body axis, in rad, not wrapped)")
+CONVENTION = ("orientation: a body's local axes x and y in global terms (z = x × y); 'turned': the rotation since "
+              "t = 0 about the body axis it turns about most (its angular velocity along that axis integrated, not "
+              "wrapped)")
 _AXES = "xyz"
 
 
@@ -64,7 +64,7 @@ def axes_text(rotation: np.ndarray) -> str:
     """The body's local axes in global terms, or that they are the global ones."""
     if np.allclose(rotation, np.eye(3), atol=1e-9):
         return "axes = global axes"
-    return "axes " + ", ".join(f"{_AXES[k]}→{direction(_clean(rotation[:, k]))}" for k in range(3))
+    return "axes " + ", ".join(f"{_AXES[k]}→{direction(_clean(rotation[:, k]))}" for k in range(2))
 
 
 def _clean(vector: np.ndarray) -> tuple[float, ...]:
@@ -79,4 +79,4 @@ def turned_text(spin: Spin | None, t: float) -> str:
     angle = spin.at(t)
     if abs(angle) < 1e-9:
         return ""
-    return f"turned {angle:.4g} rad ({angle / (2 * np.pi):.3g} turns) about {spin.name} since t = 0"
+    return f"turned {angle:.4g} rad ({angle / (2 * np.pi):.3g} turns) about {spin.name}"

@@ -194,6 +194,8 @@ def _contact_shapes(view: SystemView, c: Connector, k: int, points: list[Point])
         if origin is not None and len(origin) >= 3:
             corners = placed(c.geometry["triangle_local"], origin, rotation)
             out = [Shape("box", "contact", tuple(_p(p) for p in corners))]
+            # its edges too: a wall seen edge-on is a line, which a filled outline hardly shows
+            out += [Shape("line", "contact", (_p(corners[i]), _p(corners[(i + 1) % 3]))) for i in range(3)]
         else:
             out = []
     else:

@@ -46,9 +46,14 @@ def connector_line(view: SystemView, c: Connector) -> str:
         facts.append(f"free: {c.free}")
     if c.locked:
         facts.append(f"locked: {c.locked}")
-    facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes")
+    said = _SAID.get(c.exudyn_type, frozenset())  # said above in global terms
+    facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes" and k not in said)
     facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
     return ", ".join(facts)
+
+
+_SAID = {"JointRollingDisc": frozenset({"discRadius", "discAxis", "planeNormal", "planePosition"}),
+         "ContactSphereTriangle": frozenset({"sphereRadius"})}
 
 
 def value_text(v: object) -> str:
