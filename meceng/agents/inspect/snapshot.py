@@ -183,7 +183,8 @@ def caption(view: SystemView, stamps: Sequence[float]) -> str:
     drawn = ", ".join(f"{n} as {k}{'s' if n > 1 else ''}" for k, n in forms.items())
     count = len(view.moving_bodies())
     return (f"the system at {rows}, each seen from the top, the front, the side and isometric; "
-            f"{count} {'body' if count == 1 else 'bodies'} ({drawn}), {len(view.connectors)} connectors")
+            f"{count} {'body' if count == 1 else 'bodies'} ({drawn}), {len(view.connectors)} "
+            f"connector{'' if len(view.connectors) == 1 else 's'}")
 
 
 def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
