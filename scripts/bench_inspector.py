@@ -56,7 +56,7 @@ async def measure(slug: str, repeats: int) -> dict[str, float | int | str]:
         snapshot.append(time.perf_counter() - t0)
     end = instance.sim.end_time
     run = await execute(instance.reference_program, instance.sim.block(), ExecutionLimits(inspect_times=(end,)))
-    view = build_view(run.items, run.system, run.inspection, run.trajectory)
+    view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
     drawing = []
     for _ in range(repeats):
         t0 = time.perf_counter()

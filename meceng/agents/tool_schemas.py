@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from meceng.agents.inspect.answer import QUANTITIES
+from meceng.agents.inspect.bodies import QUANTITIES
 
 _CODE = {"type": "string", "description": "the complete program, as you would answer it"}
 
@@ -14,7 +14,8 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "name": "simulate",
         "description": ("Run a complete Exudyn program and report what it built and how it moved, in the "
                         "description's terms (global frame, SI units, the catalog's component names): every body "
-                        "with mass, centre of mass, principal inertia, initial position, angles and velocities; "
+                        "with mass, centre of mass, inertia, initial position, orientation (local axes in global "
+                        "terms, rotation accumulated about its spin axis) and velocities; "
                         "every connector with the bodies it joins, where, its free and locked directions, its "
                         "parameters; every load with its vector; then the bodies' states at a few times and the "
                         "range of every coordinate over the run. Long lists are cut and say how to ask for more."),
@@ -43,7 +44,7 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "name": "self_check",
         "description": ("Check a program for problems that need no reference solution: errors, redundant "
                         "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
-                        "Returns the degrees of freedom and a list of findings."),
+                        "Answers in words: the degrees of freedom, the findings one a line, the energy balance."),
         "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
     },
     {

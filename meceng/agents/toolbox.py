@@ -19,7 +19,8 @@ import numpy as np
 
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.inspect import snapshot as pictures
-from meceng.agents.inspect.answer import QUANTITIES, Ask, render
+from meceng.agents.inspect.answer import render
+from meceng.agents.inspect.bodies import QUANTITIES, Ask
 from meceng.agents.inspect.view import build_view
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
@@ -77,7 +78,7 @@ class Toolbox:
             if name == "snapshot":
                 return await self.snapshot(str(arguments["code"]), arguments.get("time"))
             if name == "self_check":
-                return ToolResult(json.dumps(await self.self_check(str(arguments["code"]))))
+                return ToolResult(self_check_words(await self.self_check(str(arguments["code"]))))
             if name == "list_components":
                 return ToolResult(self.catalog.menu())
             if name == "component_docs":
@@ -148,7 +149,7 @@ class Toolbox:
         run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
         if run.items is None:
             return json.dumps({"stage": run.stage, "error": _trim(run.error)})
-        view = build_view(run.items, run.system, run.inspection, run.trajectory)
+        view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
         return render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
 
     async def snapshot(self, code: str, time: Any = None) -> ToolResult:
@@ -159,19 +160,23 @@ class Toolbox:
             interfaces = ((run.part or {}).get("geometry") or {}).get("interfaces") or {}
             png = pictures.draw_part(run.surface, interfaces)
             text = pictures.describe_part(run.surface, interfaces)
+            said = "the picture of your part from the top, the front, the side and isometric: " + text.splitlines()[0]
         else:
             end = self._end_time()
             at = _clip(_times(time), end)[:1] or (end,)
             run = await self._run(code, inspect_times=at)
             if run.items is None:
                 return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))
-            view = build_view(run.items, run.system, run.inspection, run.trajectory)
+            view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
             png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
             text = pictures.describe(view, (0.0, at[0]))
+            stamps = [view.times[pictures.sample_index(view, t)] if view.times else 0.0 for t in (0.0, at[0])]
+            said = "the picture of your program's system: " + pictures.caption(view, stamps)
             if run.error:
                 text = f"the program stopped at stage '{run.stage}': {_trim(run.error, 300)}\n" + text
+                said = text.splitlines()[0] + "\n" + said
         if self.vision:
-            return ToolResult("the picture of your program's system follows", (base64.b64encode(png).decode(),))
+            return ToolResult(said, (base64.b64encode(png).decode(),))
         return ToolResult("the picture in words (this model takes no images):\n" + text)
 
     async def self_check(self, code: str) -> dict[str, Any]:
@@ -201,6 +206,18 @@ class Toolbox:
                                 "note": ("kinetic + spring + gravity/constant-force potential; a system without "
                                          "damping, contact losses or driving loads should keep it nearly constant")}
         return report
+
+
+def self_check_words(report: dict[str, Any]) -> str:
+    """The self-check in words, like the other tools' answers: stage, degrees of freedom, each
+    finding on its own line, the energy balance with its relative change."""
+    lines = [f"stage: {report['stage']}; degrees of freedom {report.get('degrees_of_freedom')}", "findings:"]
+    lines += [f"  - {finding}" for finding in report["findings"]]
+    energy = report.get("energy")
+    if energy is not None:
+        lines.append(f"energy ({energy['note']}): {energy['start']:.6g} J at t = 0, {energy['end']:.6g} J at the "
+                     f"end, a relative change of {100 * energy['relative_change']:.3g} %")
+    return "\n".join(lines)
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:
@@ -233,7 +250,8 @@ def _rounded(value: Any) -> Any:
 def _ask(arguments: dict[str, Any]) -> Ask:
     bodies = tuple(int(b) for b in arguments.get("bodies") or () if str(b).lstrip("#").isdigit()
                    for b in [str(b).lstrip("#")])
-    quantities = tuple(q for q in arguments.get("quantities") or () if q in QUANTITIES) or QUANTITIES
+    asked = ["orientation" if q == "angles" else q for q in arguments.get("quantities") or ()]  # the old name
+    quantities = tuple(q for q in asked if q in QUANTITIES) or QUANTITIES
     return Ask(bodies=bodies, quantities=quantities)
 
 

@@ -109,6 +109,7 @@ class InspectionRecorder:
             if marker.get("p") is not None:
                 markers[str(m)] = marker
         self.states.append({"t": float(t), "bodies": bodies, "markers": markers})
+        self.states[-1]["loads"] = user_load_values(self.mbs, self.api, t)
 
     def after_step(self, t: float) -> None:
         """Called from the harness's post-step hook: a state at the first step past each pending time."""
@@ -119,3 +120,35 @@ class InspectionRecorder:
 
     def result(self) -> dict[str, Any]:
         return {"ode2": self.ode2_indices(), "states": self.states}
+
+
+#: A load's user-function keys and the key of the value Exudyn passes it as its third argument.
+_LOAD_FUNCTIONS = (("loadVectorUserFunction", "loadVector"), ("loadUserFunction", "load"))
+
+
+def user_load_values(mbs: Any, api: dict[str, Any], t: float) -> dict[str, Any]:
+    """What every load given by a user function returns at time ``t`` in the current state, called
+    here in the sandbox as the solver calls it (``f(mbs, t, loadVector)``): so a model sees its drive
+    torques' values and signs, not only that a function exists. A function that raises is named
+    with its exception's type; the run goes on."""
+    out: dict[str, Any] = {}
+    for index in range(api["NumberOfLoads"](mbs.systemData)):
+        try:
+            load = api["GetLoad"](mbs, index)
+        except Exception:
+            continue
+        for key, given in _LOAD_FUNCTIONS:
+            function = load.get(key)
+            if isinstance(function, dict):  # Exudyn keeps it as {'function': f, 'type': 'Python'}
+                function = function.get("function")
+            if not callable(function):
+                continue
+            try:
+                value = _vector(function(mbs, float(t), load.get(given, 0.0)))
+            except Exception as exc:
+                out[str(index)] = {"error": type(exc).__name__}
+                break
+            if value is not None:
+                out[str(index)] = value
+            break
+    return out

@@ -13,16 +13,19 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.system import Body, BodyState, Connector, SystemView
+from meceng.agents.inspect.forms import outline_points
+from meceng.agents.inspect.geometry import placed, rolling_frame
+from meceng.agents.inspect.system import Connector, SystemView
 
 Point = tuple[float, float, float]
 
 #: role -> colour, shared by the renderers
-COLOURS = {"body": "#4a7fc1", "ground": "#666666", "joint": "#d62728", "spring": "#2ca02c",
+COLOURS = {"body": "#4a7fc1", "ground": "#666666", "joint": "#d62728", "spherical": "#d62728", "spring": "#2ca02c",
            "distance": "#9467bd", "contact": "#ff7f0e", "load": "#8c564b"}
-LEGEND = ("blue: bodies (rigid bodies as inertia-equivalent boxes, mass points as dots); grey square: ground; "
-          "red: joints and their axes; green: springs; purple: distance constraints; orange: contacts; "
-          "brown arrows: forces")
+LEGEND = ("blue: bodies as the shape their inertia gives (sphere, disc, else box), mass points as dots; grey: ground "
+          "(square) and planes discs roll on; red: joints (circle) with their axes, spherical joints (diamond: all "
+          "translations locked, rotations free), rolling contact points; green: springs; purple: distance "
+          "constraints; orange: contact geometry (spheres as circles, triangles filled); brown arrows: forces")
 
 _ROLES = {"SpringDamper": "spring", "CartesianSpringDamper": "spring", "TorsionalSpringDamper": "spring",
           "RigidBodySpringDamper": "spring", "CoordinateSpringDamper": "spring", "DistanceConstraint": "distance",
@@ -77,25 +80,6 @@ VIEWS = (Projection("top: x right, y up (looking down z)", (1, 0, 0), (0, 1, 0))
          _iso())
 
 
-def box_half_sizes(body: Body) -> np.ndarray | None:
-    """Half edge lengths of the homogeneous box with the body's mass and principal moments."""
-    if body.principal_inertia is None or body.mass is None or body.mass <= 0 or len(body.principal_inertia) != 3:
-        return None
-    i1, i2, i3 = body.principal_inertia
-    squares = 6.0 / body.mass * np.array([i2 + i3 - i1, i1 + i3 - i2, i1 + i2 - i3])
-    return 0.5 * np.sqrt(np.clip(squares, 0.0, None))
-
-
-def box_corners(body: Body, state: BodyState) -> np.ndarray | None:
-    """The 8 corners of the inertia-equivalent box in global coordinates, or None (no orientation)."""
-    half = box_half_sizes(body)
-    if half is None or state.rotation is None or body.principal_axes is None:
-        return None
-    signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
-    local = (signs * half) @ body.principal_axes.T
-    return np.asarray(state.position) + local @ state.rotation.T
-
-
 def sample_index(view: SystemView, t: float) -> int:
     return int(np.argmin([abs(s - t) for s in view.times])) if view.times else 0
 
@@ -132,28 +116,34 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
     shapes: list[Shape] = []
     for c in view.connectors:
         points = connector_points(view, c, k)
-        if c.kind in JOINTS and points:
+        if "axis_local" in c.geometry and len(points) == 2:
+            shapes += _rolling_shapes(view, c, k, points[1])
+        elif c.kind == "SphericalJoint" and points:
+            shapes.append(Shape("point", "spherical", (points[0],)))
+        elif c.kind in JOINTS and points:
             shapes.append(Shape("point", "joint", (points[0],)))
-            if c.axis is not None and k == 0:
-                a = np.asarray(c.axis[:3]) * 0.12 * size
+            axis = joint_axis(view, c, k)
+            if axis is not None:
+                a = axis * 0.12 * size
                 shapes.append(Shape("line", "joint", (_p(points[0] - a), _p(points[0] + a))))
         elif len(points) == 2:
             role = _ROLES.get(c.kind, "spring")
             if role != "contact" and not np.allclose(points[0], points[1]):  # a contact is no link
                 shapes.append(Shape("line", role, (points[0], points[1])))
             if role == "contact":
-                for point, radius in zip(points, c.parameters.get("spheresRadii") or [], strict=False):
-                    shapes.append(Shape("circle", role, (point,), float(radius)))
+                shapes += _contact_shapes(view, c, k, points)
     for body in view.bodies:
         state = body.state_at(at)
         if state is None or len(state.position) < 3:
             continue
         position = _p(state.position)
-        corners = box_corners(body, state)
+        drawn = None if body.is_ground else outline_points(body, state)
         if body.is_ground:
             shapes.append(Shape("point", "ground", (position,)))
-        elif corners is not None:
-            shapes.append(Shape("box", "body", tuple(_p(c) for c in corners)))
+        elif drawn is not None:
+            kind, points, radius = drawn
+            shapes.append(Shape("circle" if kind == "circle" else "box", "body", tuple(_p(c) for c in points),
+                                radius))
         else:
             shapes.append(Shape("point", "body", (position,)))
         shapes.append(Shape("label", "body", (position,), text=f"#{body.index}"))
@@ -166,6 +156,52 @@ def build_scene(view: SystemView, t: float) -> tuple[Shape, ...]:
         tail = np.asarray(state.position[:3])
         shapes.append(Shape("arrow", "load", (_p(tail), _p(tail + np.asarray(load.vector[:3]) / norm * 0.15 * size))))
     return tuple(shapes)
+
+
+def joint_axis(view: SystemView, c: Connector, k: int) -> np.ndarray | None:
+    """A joint's axis at sample ``k``: its axis at t = 0 turned with its first marker since then."""
+    if c.axis is None or len(c.axis) < 3:
+        return None
+    axis = np.asarray(c.axis[:3], dtype=float)
+    if k == 0 or not c.markers or k >= len(view.marker_rotations) or not view.marker_rotations:
+        return axis
+    start, now = view.marker_rotations[0].get(c.markers[0]), view.marker_rotations[k].get(c.markers[0])
+    return axis if start is None or now is None else now @ (start.T @ axis)
+
+
+def _rolling_shapes(view: SystemView, c: Connector, k: int, centre: Point) -> list[Shape]:
+    """A rolling disc: its contact point, the axle through the centre, a patch of the plane it rolls on."""
+    rotation = (view.marker_rotations[k] if k < len(view.marker_rotations) else {}).get(c.markers[1])
+    frame = rolling_frame(c.geometry, centre, rotation)
+    if not frame:
+        return []
+    contact, r = frame["contact"], 1.3 * c.geometry["radius"]
+    lateral, longitudinal, _ = frame["directions"]
+    patch = [contact + r * (a * longitudinal + b * lateral) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    axle = frame["axis"] * 0.6 * c.geometry["radius"]
+    return [Shape("box", "ground", tuple(_p(p) for p in patch)), Shape("point", "joint", (_p(contact),)),
+            Shape("line", "joint", (_p(np.asarray(centre) - axle), _p(np.asarray(centre) + axle)))]
+
+
+def _contact_shapes(view: SystemView, c: Connector, k: int, points: list[Point]) -> list[Shape]:
+    """A contact's own geometry: its spheres as circles, a triangle as a filled triangle."""
+    radii = list(c.parameters.get("spheresRadii") or [])
+    if "triangle_local" in c.geometry:
+        radii = [c.geometry["radius"]]
+        marker = c.markers[1]
+        origin = (view.marker_states[k] if k < len(view.marker_states) else {}).get(marker)
+        rotation = (view.marker_rotations[k] if k < len(view.marker_rotations) else {}).get(marker)
+        if origin is not None and len(origin) >= 3:
+            corners = placed(c.geometry["triangle_local"], origin, rotation)
+            out = [Shape("box", "contact", tuple(_p(p) for p in corners))]
+            # its edges too: a wall seen edge-on is a line, which a filled outline hardly shows
+            out += [Shape("line", "contact", (_p(corners[i]), _p(corners[(i + 1) % 3]))) for i in range(3)]
+        else:
+            out = []
+    else:
+        out = []
+    return out + [Shape("circle", "contact", (point,), float(radius))
+                  for point, radius in zip(points, radii, strict=False)]
 
 
 def bounds(scenes: list[tuple[Shape, ...]], projection: Projection) -> tuple[np.ndarray, np.ndarray]:

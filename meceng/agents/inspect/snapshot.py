@@ -11,6 +11,7 @@ orthogonal views and an isometric one per row, axes labelled in metres. Text-onl
 from __future__ import annotations
 
 import io
+import textwrap
 from collections.abc import Sequence
 
 import matplotlib
@@ -23,6 +24,8 @@ from matplotlib.patches import Circle, Polygon
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from meceng.agents.inspect.answer import num, vec
+from meceng.agents.inspect.forms import form, form_words
+from meceng.agents.inspect.geometry import placed, rolling_frame
 from meceng.agents.inspect.scene import (
     COLOURS,
     JOINTS,
@@ -31,10 +34,10 @@ from meceng.agents.inspect.scene import (
     Projection,
     Shape,
     bounds,
-    box_half_sizes,
     build_scene,
     connector_points,
     hull,
+    joint_axis,
     sample_index,
 )
 from meceng.agents.inspect.system import SystemView, direction
@@ -48,7 +51,7 @@ def _axis_label(vector: tuple[float, ...]) -> str:
     return f"{'-' if vector[k] < 0 else ''}{_AXIS_NAMES[k]} [m]" if abs(vector[k]) > 0.999 else ""
 
 
-def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection) -> None:
+def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection, span: np.ndarray | None = None) -> None:
     """One scene in one view on 2D matplotlib axes: shapes of a kind go in one collection (a grid of
     hundreds of springs draws in a fraction of the time of one artist each)."""
     polygons, lines, dashed, circles, points, labels = [], [], [], [], [], []
@@ -62,7 +65,7 @@ def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection) -
         elif shape.kind == "point":
             points.append((xy[0], shape.role, colour))
         elif shape.kind == "circle":
-            circles.append((xy[0], shape.radius, colour))
+            circles.append((xy[0], shape.radius, colour, shape.role == "body"))
         elif shape.kind == "arrow":
             ax.annotate("", (xy[1, 0], xy[1, 1]), (xy[0, 0], xy[0, 1]), arrowprops={"arrowstyle": "->",
                                                                                    "color": colour})
@@ -76,18 +79,38 @@ def draw_shapes(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection) -
         if group:
             ax.add_collection(LineCollection([xy for xy, _, _ in group], colors=[c for _, c, _ in group],
                                              linewidths=[w for _, _, w in group], linestyles=style))
-    if circles:
-        ax.add_collection(PatchCollection([Circle(tuple(c), r) for c, r, _ in circles], facecolors="none",
-                                          edgecolors=[c for _, _, c in circles], linewidths=0.8))
-    for role, marker, size, hollow in (("ground", "s", 40, False), ("joint", "o", 22, True), ("body", "o", 28, False)):
+    if circles:  # a body's sphere filled like its box would be; a contact's circle hollow
+        ax.add_collection(PatchCollection([Circle(tuple(c), r) for c, r, _, _ in circles], alpha=0.6,
+                                          facecolors=[(c if filled else "none") for _, _, c, filled in circles],
+                                          edgecolors=[c for _, _, c, _ in circles], linewidths=0.8))
+    for role, marker, size, hollow in (("ground", "s", 40, False), ("joint", "o", 22, True),
+                                       ("spherical", "D", 30, False), ("body", "o", 28, False)):
         chosen = [(p, c) for p, r, c in points if r == role]
         if chosen:
             xy = np.array([p for p, _ in chosen])
             colours = [c for _, c in chosen]
             ax.scatter(xy[:, 0], xy[:, 1], s=size, marker=marker, facecolors="none" if hollow else colours,
                        edgecolors=colours, zorder=3)
-    for (x, y), text in labels[:MAX_LABELS]:
-        ax.text(x, y, " " + text, fontsize=7, va="bottom")
+    for (x, y), text in spread_labels(labels[:MAX_LABELS], span):
+        ax.text(x, y, " " + text, fontsize=7, va="bottom", clip_on=True)
+
+
+def spread_labels(labels: list[tuple[np.ndarray, str]], span: np.ndarray | None
+                  ) -> list[tuple[tuple[float, float], str]]:
+    """Labels moved apart where they would sit on top of each other: each one that lands within a
+    label's size of an earlier one goes one line lower (screen units from the panel's span)."""
+    if span is None:
+        return [((float(xy[0]), float(xy[1])), text) for xy, text in labels]
+    width, height = 0.07 * float(span[0]), 0.06 * float(span[1])
+    placed: list[tuple[float, float]] = []
+    out = []
+    for xy, text in labels:
+        x, y = float(xy[0]), float(xy[1])
+        while any(abs(x - px) < width and abs(y - py) < height for px, py in placed):
+            y -= height
+        placed.append((x, y))
+        out.append(((x, y), text))
+    return out
 
 
 def _triad(ax: plt.Axes, projection: Projection) -> None:
@@ -101,7 +124,7 @@ def _triad(ax: plt.Axes, projection: Projection) -> None:
 
 def _panel(ax: plt.Axes, shapes: Sequence[Shape], projection: Projection, low: np.ndarray, high: np.ndarray,
            title: str) -> None:
-    draw_shapes(ax, shapes, projection)
+    draw_shapes(ax, shapes, projection, high - low)
     ax.set_xlim(low[0], high[0])
     ax.set_ylim(low[1], high[1])
     ax.set_aspect("equal", adjustable="box")
@@ -121,17 +144,47 @@ def draw(view: SystemView, times: Sequence[float], title: str = "") -> bytes:
     stamps = [view.times[sample_index(view, t)] if view.times else 0.0 for t in times] or [0.0]
     fig, grid = plt.subplots(len(scenes), len(VIEWS), figsize=(13, 3.3 * len(scenes)), dpi=80, squeeze=False)
     for c, projection in enumerate(VIEWS):
-        low, high = bounds(scenes, projection)  # one scale per view: motion between the rows shows
-        for r, shapes in enumerate(scenes):
+        for r, (shapes, (low, high)) in enumerate(zip(scenes, _frames(scenes, projection), strict=True)):
             _panel(grid[r, c], shapes, projection, low, high, f"t = {num(stamps[r])} s — {projection.name}")
-    fig.suptitle((title + "\n" if title else "") + LEGEND, fontsize=8)
+    words = caption(view, stamps)
+    fig.suptitle((title + ": " if title else "") + words + "\n" + textwrap.fill(LEGEND, 190), fontsize=8)
     # fixed margins: tight_layout measured every label and took a large share of a picture's time
-    fig.subplots_adjust(left=0.05, right=0.99, bottom=0.1 / len(scenes), top=1 - 0.22 / len(scenes),
+    fig.subplots_adjust(left=0.05, right=0.99, bottom=0.1 / len(scenes), top=1 - 0.3 / len(scenes),
                         wspace=0.3, hspace=0.35)
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png")
     plt.close(fig)
     return buffer.getvalue()
+
+
+def _frames(scenes: list[tuple[Shape, ...]], projection: Projection) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Each row's screen window in one view: one scale for all rows (motion between them shows),
+    and where the system travels far beyond its own size (a car), each row centred on the system,
+    so the vehicle is not a dot at either end of its path (the axes' numbers still say where)."""
+    low, high = bounds(scenes, projection)
+    rows = [bounds([tuple(x for x in scene if x.kind != "label" and (x.kind, x.role) != ("point", "ground"))
+                    or scene], projection)
+            for scene in scenes]  # the ground's origin (and its label) would stretch every row
+    size = max(float(np.max(h - lo)) for lo, h in rows)
+    if float(np.max(high - low)) <= 2.5 * size:
+        return [(low, high)] * len(scenes)
+    span = np.max([h - lo for lo, h in rows], axis=0)
+    return [((lo + h) / 2 - span / 2, (lo + h) / 2 + span / 2) for lo, h in rows]
+
+
+def caption(view: SystemView, stamps: Sequence[float]) -> str:
+    """One line saying what the picture shows and when."""
+    rows = " and ".join(f"t = {num(t)} s ({'top' if k == 0 else 'next'} row)" for k, t in enumerate(stamps))
+    forms: dict[str, int] = {}
+    for body in view.moving_bodies():
+        state = body.state_at(0.0)
+        kind = form(body).kind if state is not None and form(body) is not None else "dot"
+        forms[kind] = forms.get(kind, 0) + 1
+    drawn = ", ".join(f"{n} as {k}{'s' if n > 1 else ''}" for k, n in forms.items())
+    count = len(view.moving_bodies())
+    return (f"the system at {rows}, each seen from the top, the front, the side and isometric; "
+            f"{count} {'body' if count == 1 else 'bodies'} ({drawn}), {len(view.connectors)} "
+            f"connector{'' if len(view.connectors) == 1 else 's'}")
 
 
 def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
@@ -150,16 +203,22 @@ def describe(view: SystemView, times: Sequence[float], limit: int = 16) -> str:
             if shown > limit:
                 lines.append(f"  … {len(view.moving_bodies()) - limit} more bodies (simulate(code, bodies=[...]))")
                 break
-            half = box_half_sizes(body)
-            shape = "a point"
-            if half is not None and state.rotation is not None and body.principal_axes is not None:
-                long_axis = state.rotation @ body.principal_axes[:, int(np.argmax(half))]
-                shape = (f"a box {' x '.join(num(2 * h) for h in half)} m, longest edge along {vec(long_axis)}")
-            lines.append(f"  {body.label} at {vec(state.position)}: {shape}")
+            lines.append(f"  {body.label} at {vec(state.position)}: {form_words(body, state)}")
         for c in view.connectors[:limit]:
             points = connector_points(view, c, k)
-            axis = f", axis {vec(c.axis)}" if c.axis and k == 0 else ""
-            if (c.kind in JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
+            turned = joint_axis(view, c, k) if c.kind in JOINTS else None
+            axis = f", axis {vec(turned)}" if turned is not None else ""
+            if c.kind == "SphericalJoint":
+                axis = " (spherical: all translations locked, every rotation free)"
+            rotation = (view.marker_rotations[k] if k < len(view.marker_rotations) else {}).get(
+                c.markers[1] if len(c.markers) > 1 else -1)
+            if "axis_local" in c.geometry and len(points) == 2 and (frame := rolling_frame(c.geometry, points[1],
+                                                                                            rotation)):
+                lines.append(f"  {c.label}: contact point {vec(frame['contact'])}, axle along {vec(frame['axis'])}")
+            elif "corners" in c.geometry and points:
+                corners = placed(c.geometry["triangle_local"], points[-1], rotation)
+                lines.append(f"  {c.label}: sphere at {vec(points[0])}, triangle " + ", ".join(map(vec, corners)))
+            elif (c.kind in JOINTS and points) or (len(points) == 2 and np.allclose(points[0], points[1])):
                 lines.append(f"  {c.label} at {vec(points[0])}{axis}")
             elif len(points) == 2:
                 lines.append(f"  {c.label} from {vec(points[0])} to {vec(points[1])}")

@@ -7,9 +7,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from scipy.spatial.transform import Rotation
-
-ANGLES = "angles (rx, ry, rz) in rad, R = Rx(rx)·Ry(ry)·Rz(rz) (Tait-Bryan x-y'-z'')"
 
 
 @dataclass(frozen=True)
@@ -22,11 +19,22 @@ class BodyState:
     velocity: tuple[float, ...] | None = None
     angular_velocity: tuple[float, ...] | None = None
 
+
+
+@dataclass(frozen=True)
+class Spin:
+    """A body's accumulated rotation about one of its own axes, at every step of the run."""
+
+    axis: int  # 0, 1, 2: local x, y, z
+    times: np.ndarray
+    angles: np.ndarray
+
+    def at(self, t: float) -> float:
+        return float(self.angles[int(np.argmin(np.abs(self.times - t)))])
+
     @property
-    def angles(self) -> tuple[float, ...] | None:
-        if self.rotation is None:
-            return None
-        return tuple(float(a) for a in Rotation.from_matrix(self.rotation).as_euler("XYZ"))
+    def name(self) -> str:
+        return f"local {'xyz'[self.axis]}"
 
 
 @dataclass(frozen=True)
@@ -40,6 +48,7 @@ class Body:
     principal_inertia: tuple[float, ...] | None  # about the centre of mass, ascending
     node: int | None
     principal_axes: np.ndarray | None = None  # columns: the principal axes in body coordinates
+    inertia_local: np.ndarray | None = None  # 3x3 about the centre of mass, body axes
     states: tuple[BodyState, ...] = ()
 
     @property
@@ -70,6 +79,7 @@ class Connector:
     parameters: dict[str, Any] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)  # initial length, gap, ...
     markers: tuple[int, ...] = ()
+    geometry: dict[str, Any] = field(default_factory=dict)  # contact geometry (``geometry.py``)
 
     @property
     def label(self) -> str:
@@ -84,6 +94,8 @@ class Load:
     point: tuple[float, ...] | None
     vector: tuple[float, ...] | None  # None: given by a user function
     body_fixed: bool = False
+    #: a user function's values at the sampled times (evaluated in the sandbox); text where it raised
+    values: tuple[tuple[float, tuple[float, ...] | str], ...] = ()
 
     @property
     def label(self) -> str:
@@ -108,6 +120,8 @@ class SystemView:
     degrees_of_freedom: int | None
     redundant_constraints: int | None
     marker_states: tuple[dict[int, tuple[float, ...]], ...] = ()  # marker positions at each sample time
+    marker_rotations: tuple[dict[int, np.ndarray], ...] = ()  # rigid markers' rotations at each sample time
+    spins: dict[int, Spin] = field(default_factory=dict)  # accumulated rotation per body (``orientation.py``)
 
     def body(self, index: int) -> Body | None:
         return next((b for b in self.bodies if b.index == index), None)

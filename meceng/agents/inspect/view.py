@@ -2,7 +2,7 @@
 
 Built from one execution of the program alone (its captured items, the inspector's states and its
 trajectory), never from a ground truth. Everything is in the global frame and SI units; a body's
-position is its centre of mass; orientations are Tait-Bryan angles (see ``ANGLES``).
+position is its centre of mass; orientation is said as ``orientation.py`` says it.
 """
 
 from __future__ import annotations
@@ -12,9 +12,19 @@ import re
 from typing import Any
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
-from meceng.agents.inspect.system import Body, BodyState, Connector, CoordinateRange, Load, SystemView, direction
+from meceng.agents.inspect.geometry import rolling_disc, sphere_triangle
+from meceng.agents.inspect.orientation import spins
+from meceng.agents.inspect.system import (
+    Body,
+    BodyState,
+    Connector,
+    CoordinateRange,
+    Load,
+    Spin,
+    SystemView,
+    direction,
+)
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
 
 #: Item keys that are bookkeeping, not physics; left out of a connector's parameters.
@@ -37,26 +47,27 @@ def _name(item: dict[str, Any]) -> str | None:
     return None if not name or _AUTO_NAME.match(name) else name
 
 
-def _principal_inertia(item: dict[str, Any]) -> tuple[tuple[float, ...] | None, np.ndarray | None]:
+def _principal_inertia(item: dict[str, Any]) -> tuple[tuple[float, ...] | None, np.ndarray | None,
+                                                      np.ndarray | None]:
     """Exudyn keeps a rigid body's inertia about its reference point: moved to the centre of mass,
-    its principal values (ascending) and axes (columns, body coordinates)."""
+    its principal values (ascending), axes (columns, body coordinates) and the tensor in body axes."""
     inertia = _tuple(item.get("inertia"))
     mass = item.get("mass")
     if inertia is None or not isinstance(mass, int | float):
-        return None, None
+        return None, None, None
     if len(inertia) == 1:  # RigidBody2D: one moment about z
-        return inertia, None
+        return inertia, None, None
     if len(inertia) == 9:  # a flexible body's 3x3 matrix, also about its frame's origin
         tensor = np.asarray(inertia).reshape(3, 3)
     elif len(inertia) == 6:
         xx, yy, zz, yz, xz, xy = inertia
         tensor = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
     else:
-        return None, None
+        return None, None, None
     c = np.asarray(_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3]
     tensor = tensor - float(mass) * (float(c @ c) * _E - np.outer(c, c))
     values, axes = np.linalg.eigh(tensor)
-    return tuple(float(v) for v in values), axes
+    return tuple(float(v) for v in values), axes, tensor
 
 
 def _rotation(value: Any) -> np.ndarray | None:
@@ -94,6 +105,8 @@ def _markers_at(inspection: dict[str, Any], k: int) -> dict[int, dict[str, Any]]
 def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], node_body: dict[int, int],
                marker_t0: dict[int, dict[str, Any]]) -> Connector:
     exudyn_type = str(item.get("objectType", ""))
+    if "trianglePoints" in item:  # Exudyn reports a sphere-triangle contact as ContactSphereSphere
+        exudyn_type = "ContactSphereTriangle"
     numbers = [int(m) for m in item.get("markerNumbers") or [] if isinstance(m, int | float)]
     bodies: list[int | None] = []
     for m in numbers:
@@ -114,8 +127,14 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
     parameters = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k
                   and _small(v) and (k in _ALWAYS_SHOWN or _nonzero(v))}
     axis, free, locked, derived = _semantics(exudyn_type, item, frame, points)
+    shape: dict[str, Any] = {}
+    if exudyn_type == "ContactSphereTriangle" and len(numbers) == 2:
+        shape = sphere_triangle(item, points[0], points[1], _rotation(marker_t0.get(numbers[1], {}).get("R")))
+    if exudyn_type == "JointRollingDisc" and len(numbers) == 2:
+        shape = rolling_disc(item, points[0], frame)
+        shape["disc_rotation"] = _rotation(marker_t0.get(numbers[1], {}).get("R"))
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
-                     free, locked, parameters, derived, tuple(numbers))
+                     free, locked, parameters, derived, tuple(numbers), shape)
 
 
 #: Parameters a model must see even at zero (a spring without damping is a fact, not a default).
@@ -170,8 +189,6 @@ def _semantics(exudyn_type: str, item: dict[str, Any], frame: np.ndarray | None,
 
         free = said(False) + (["all rotations"] if exudyn_type == "JointSpherical" else [])
         return None, "; ".join(free) or "nothing", "; ".join(said(True)) or "nothing", derived
-    if exudyn_type == "JointRollingDisc":
-        return _tuple(item.get("discAxis")), "rolling without slip", "", derived
     if exudyn_type == "ContactSphereSphere" and "initial_length" in derived:
         radii = _tuple(item.get("spheresRadii")) or (0.0, 0.0)
         derived["initial_gap"] = derived["initial_length"] - sum(radii[:2])
@@ -184,14 +201,15 @@ _LENGTH_TYPES = frozenset({"ConnectorSpringDamper", "ConnectorDistance", "Contac
 
 _NODE_COORDINATES = {
     "Point": ("x", "y", "z"), "Point2D": ("x", "y"), "RigidBody2D": ("x", "y", "phi"),
-    "RigidBodyRxyz": ("x", "y", "z", "rx", "ry", "rz"), "RigidBodyEP": ("x", "y", "z"),
+    "RigidBodyRxyz": ("x", "y", "z"), "RigidBodyEP": ("x", "y", "z"),
     "RigidBodyRotVecLG": ("x", "y", "z"), "RigidBodyRotVec": ("x", "y", "z"),
 }
 
 
 def _ranges(bodies: tuple[Body, ...], nodes: list[dict[str, Any]], ode2: dict[str, int],
-            trajectory: np.ndarray | None) -> tuple[CoordinateRange, ...]:
-    """Per body coordinate, its range over the whole run (reference point; EP rotations as angles)."""
+            trajectory: np.ndarray | None, spins: dict[int, Spin]) -> tuple[CoordinateRange, ...]:
+    """Per body coordinate, its range over the whole run (reference point; a 3D rotation as the
+    rotation accumulated about the body axis it turns about most)."""
     if trajectory is None or not len(trajectory):
         return ()
     out = []
@@ -205,16 +223,16 @@ def _ranges(bodies: tuple[Body, ...], nodes: list[dict[str, Any]], ode2: dict[st
             if start + k < trajectory.shape[1]:
                 column = trajectory[:, start + k]
                 out.append(CoordinateRange(body.index, name, float(column.min()), float(column.max())))
-        if node_type == "RigidBodyEP" and start + 7 <= trajectory.shape[1]:
-            ep = trajectory[:, start + 3:start + 7]
-            angles = np.unwrap(Rotation.from_quat(np.column_stack([ep[:, 1:], ep[:, 0]])).as_euler("XYZ"), axis=0)
-            for k, name in enumerate(("rx", "ry", "rz")):
-                out.append(CoordinateRange(body.index, name, float(angles[:, k].min()), float(angles[:, k].max())))
+        if body.index in spins and np.ptp(spins[body.index].angles) > 1e-9:
+            angles = spins[body.index].angles
+            out.append(CoordinateRange(body.index, f"turned about {spins[body.index].name}", float(angles.min()),
+                                       float(angles.max())))
     return tuple(out)
 
 
 def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
-               inspection: dict[str, Any] | None, trajectory: np.ndarray | None = None) -> SystemView:
+               inspection: dict[str, Any] | None, trajectory: np.ndarray | None = None,
+               times: np.ndarray | None = None) -> SystemView:
     """The program's system as the inspector shows it and the snapshot draws it."""
     inspection = inspection or {}
     objects = items.get("objects", [])
@@ -233,13 +251,13 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
             if isinstance(node, int | float):
                 node_body.setdefault(int(node), index)
             mass = item.get("mass", item.get("physicsMass"))
-            principal, axes = _principal_inertia(item)
+            principal, axes, tensor = _principal_inertia(item)
             to_centre = _tuple(item.get("centerOfMass")) if kind == "FlexibleBody" else None
             bodies.append(Body(
                 index, kind, str(item.get("objectType")), _name(item),
                 float(mass) if isinstance(mass, int | float) else None,
                 (_tuple(item.get("centerOfMass")) or (0.0, 0.0, 0.0))[:3], principal,
-                int(node) if isinstance(node, int | float) else None, principal_axes=axes,
+                int(node) if isinstance(node, int | float) else None, principal_axes=axes, inertia_local=tensor,
                 states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
@@ -255,14 +273,31 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
         vector = None if user else _tuple(item.get("loadVector", item.get("load")))
         point = _tuple(marker_t0.get(int(item.get("markerNumber", -1)), {}).get("p"))
         loads.append(Load(index, load_name(str(item.get("loadType", "")), user), body, point, vector,
-                          bool(item.get("bodyFixed", False))))
+                          bool(item.get("bodyFixed", False)), _load_values(index, inspection) if user else ()))
     states = inspection.get("states", [])
     marker_states = tuple({int(m): _tuple(v.get("p")) or () for m, v in s.get("markers", {}).items()}
                           for s in states)
+    marker_rotations = tuple({int(m): r for m, v in s.get("markers", {}).items()
+                              if (r := _rotation(v.get("R"))) is not None} for s in states)
     view_bodies = tuple(bodies)
+    ode2 = inspection.get("ode2", {})
+    turns = spins(view_bodies, nodes, ode2, trajectory, times)
     return SystemView(view_bodies, tuple(connectors), tuple(loads), tuple(float(s["t"]) for s in states),
-                      _ranges(view_bodies, nodes, inspection.get("ode2", {}), trajectory),
-                      _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states)
+                      _ranges(view_bodies, nodes, ode2, trajectory, turns),
+                      _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
+                      marker_rotations, turns)
+
+
+def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, tuple[float, ...] | str], ...]:
+    """A user-function load's values at the sampled times, as the sandbox evaluated them."""
+    out: list[tuple[float, tuple[float, ...] | str]] = []
+    for sample in inspection.get("states", []):
+        value = sample.get("loads", {}).get(str(index))
+        if isinstance(value, dict):
+            out.append((float(sample["t"]), f"raised {value.get('error', 'an error')}"))
+        elif (vector := _tuple(value)) is not None:
+            out.append((float(sample["t"]), vector))
+    return tuple(out)
 
 
 def _int(value: Any) -> int | None:

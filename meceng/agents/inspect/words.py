@@ -1,0 +1,80 @@
+"""Items in words: numbers, vectors and connector lines as the inspector writes them (one place, so
+the answer and the picture's words agree)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import numpy as np
+
+from meceng.agents.inspect.geometry import rolling_frame, rolling_words
+from meceng.agents.inspect.system import Connector, SystemView, direction
+
+
+def num(x: float) -> str:
+    """Four significant digits; round-off below 1e-12 shows as 0."""
+    text = f"{0.0 if abs(x) < 1e-12 else x:.4g}"
+    return "0" if text in ("-0", "0", "-0.0") else text
+
+
+def vec(values: Iterable[float] | None) -> str:
+    return "?" if values is None else "(" + ", ".join(num(v) for v in values) + ")"
+
+
+def name_of(view: SystemView, index: int | None) -> str:
+    if index is None:
+        return "a node coordinate"
+    body = view.body(index)
+    return body.label if body is not None else f"#{index}"
+
+
+def connector_line(view: SystemView, c: Connector) -> str:
+    ends = " — ".join(name_of(view, b) for b in c.bodies)
+    facts = [f"{c.label}: {ends}"]
+    points = [p for p in c.points if p is not None]
+    if "corners" in c.geometry:
+        facts.append(_triangle(c))
+    elif "axis_local" in c.geometry:
+        facts += rolling_words(c.geometry, rolling_frame(c.geometry, c.points[1], c.geometry.get("disc_rotation")),
+                               vec, direction)
+    elif points:
+        same = len(points) == 2 and np.allclose(points[0], points[1], atol=1e-9)
+        facts.append(f"at {vec(points[0])}" if same or len(points) == 1 else "at " + " and ".join(map(vec, points)))
+    if c.axis is not None and not c.free:
+        facts.append(f"axis {vec(c.axis)}")
+    if c.free:
+        facts.append(f"free: {c.free}")
+    if c.locked:
+        facts.append(f"locked: {c.locked}")
+    said = _SAID.get(c.exudyn_type, frozenset())  # said above in global terms
+    facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes" and k not in said)
+    facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
+    return ", ".join(facts)
+
+
+_SAID = {"JointRollingDisc": frozenset({"discRadius", "discAxis", "planeNormal", "planePosition"}),
+         "ContactSphereTriangle": frozenset({"sphereRadius"})}
+
+
+def value_text(v: object) -> str:
+    if isinstance(v, bool):
+        return str(v).lower()
+    if isinstance(v, int | float):
+        return num(float(v))
+    if isinstance(v, list):
+        return vec(np.ravel(np.asarray(v, dtype=float)))
+    return str(v)
+
+
+
+
+def _triangle(c: Connector) -> str:
+    """A sphere-triangle contact: where the sphere is, the triangle's corners, normal and the gap."""
+    g = c.geometry
+    centre = c.points[0] if c.points else None
+    side = "+" if g["side"] > 0 else "-"
+    normal = direction(tuple(float(x) for x in g["normal"]))
+    return (f"sphere (radius {num(g['radius'])}) centred at {vec(centre)}; triangle corners "
+            + ", ".join(vec(p) for p in g["corners"])
+            + f" (global), normal {normal} (right-hand rule over the corners in order; the sphere's centre is on "
+            f"its {side} side), gap {num(g['gap'])} (centre to the triangle minus the radius; negative: penetrating)")
