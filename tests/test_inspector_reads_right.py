@@ -40,9 +40,10 @@ async def _simulate(slug: str, program: str | None = None, **arguments) -> str:
 
 
 async def _view(slug: str, times: tuple[float, ...] | None = None, program: str | None = None) -> SystemView:
+    """The view the agent's tools make (user-function loads called at the sampled states)."""
     instance = _instance(slug)
     run = await execute(program or instance.reference_program, instance.sim.block(),
-                        ExecutionLimits(inspect_times=times or (instance.sim.end_time,)))
+                        ExecutionLimits(inspect_times=times or (instance.sim.end_time,), inspect_loads=True))
     return build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
 
 
@@ -270,3 +271,23 @@ async def test_self_check_answers_in_words() -> None:
     broken = instance.reference_program.replace("mbs.Assemble()", "mbs.Assemble()\nraise ValueError('late')")
     words = (await toolbox.call("self_check", {"code": broken})).text
     assert "findings:\n  - " in words and "{" not in words
+
+
+async def test_a_graded_run_never_calls_a_user_function_outside_the_solver() -> None:
+    """The values of user-function loads are the agent's tools' business: a graded execution (which
+    records the inspector's states at t = 0 and the end) must move exactly as one without the
+    inspector, even for a function that keeps state between calls."""
+    instance = _instance("mass_oscillator_with_user_function")
+    program = instance.reference_program.replace(
+        "def UFforce(mbs, t, loadVector):\n",
+        "calls = [0]\n\ndef UFforce(mbs, t, loadVector):\n    calls[0] += 1\n"
+        "    return [force_amplitude * (2.0 if calls[0] == 1 else 1.0), 0, 0]\n")
+    assert "calls[0] == 1" in program
+    block = instance.sim.block()
+    plain = await execute(program, block, ExecutionLimits())
+    graded = await execute(program, block, ExecutionLimits(inspect_times=(instance.sim.end_time,)))
+    assert plain.solved and graded.solved and graded.inspection is not None
+    assert np.array_equal(plain.trajectory, graded.trajectory)
+    # the agent's tool does call it, and says what it returned
+    shown = await execute(program, block, ExecutionLimits(inspect_times=(instance.sim.end_time,), inspect_loads=True))
+    assert any(state.get("loads") for state in shown.inspection["states"])

@@ -138,7 +138,8 @@ class Toolbox:
             block = ENERGY_CODE + block.replace(solve, (
                 "_e0 = _meceng_energy(mbs)\n" + solve + "\n"
                 f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
-        limits = self.limits if inspect_times is None else replace(self.limits, inspect_times=inspect_times)
+        limits = (self.limits if inspect_times is None
+                  else replace(self.limits, inspect_times=inspect_times, inspect_loads=True))
         return await execute(code, block, limits, pool=self.pool, files=self.files)
 
     def _end_time(self) -> float:

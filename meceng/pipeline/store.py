@@ -36,7 +36,8 @@ log = get_logger(__name__)
 
 STACK = ("exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "pymeshlab", "meceng")
 #: the harness code that decides what an execution captures
-CAPTURE_MODULES = ("runner.py", "harness.py", "part_runner.py", "guard.py", "executor.py", "execution.py", "inspection.py")
+CAPTURE_MODULES = ("runner.py", "harness.py", "part_runner.py", "guard.py", "executor.py", "execution.py",
+                   "inspection.py")
 FORMAT = 1
 
 
@@ -59,7 +60,8 @@ def stack_fingerprint() -> str:
 
 def reference_key(program: str, sim_block: str, limits: ExecutionLimits) -> str:
     """The digest a ground-truth execution is stored under."""
-    shape = {k: v for k, v in asdict(limits).items() if k in ("mode", "n_modes", "guard", "inspect_times")}
+    shape = {k: v for k, v in asdict(limits).items()
+             if k in ("mode", "n_modes", "guard", "inspect_times", "inspect_loads")}
     text = json.dumps({"format": FORMAT, "program": program, "sim": sim_block, "limits": shape,
                        "stack": stack_fingerprint()}, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()

@@ -25,6 +25,10 @@ class ExecutionLimits:
     save_fem_to: str | None = None  # part mode: keep the program's reduced FEMinterface here (.npz)
     # the model inspector: body and marker states at t = 0 and at these times (None: not recorded)
     inspect_times: tuple[float, ...] | None = None
+    # the inspector also calls the program's user-function loads at those states, to show their values:
+    # the agent's tools only; a graded run never calls a program's function outside its solver (a
+    # function that keeps state would then move differently)
+    inspect_loads: bool = False
 
 
 @dataclass(frozen=True)

@@ -166,7 +166,8 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
                                "guard": limits.guard, "isolate_network": limits.isolate_network,
                                "mode": limits.mode, "n_modes": limits.n_modes,
                                "save_fem": limits.save_fem_to is not None,
-                               "inspect_times": None if limits.inspect_times is None else list(limits.inspect_times)}))
+                               "inspect_times": None if limits.inspect_times is None else list(limits.inspect_times),
+                               "inspect_loads": limits.inspect_loads}))
     (scratch / "program.py").write_text(program)
     return job, token
 

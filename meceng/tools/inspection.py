@@ -32,8 +32,9 @@ def _vector(value: Any) -> list[float] | None:
 class InspectionRecorder:
     """Collects states of one system at t = 0 and at requested times."""
 
-    def __init__(self, mbs: Any, api: dict[str, Any], times: list[float]) -> None:
+    def __init__(self, mbs: Any, api: dict[str, Any], times: list[float], loads: bool = False) -> None:
         self.mbs = mbs
+        self.loads = loads  # call user-function loads at each state (the agent's tools only)
         self.api = api
         self.out = api["OutputVariableType"]  # bound before the program ran (it may replace exudyn's)
         self.configurations = api["ConfigurationType"]
@@ -109,7 +110,8 @@ class InspectionRecorder:
             if marker.get("p") is not None:
                 markers[str(m)] = marker
         self.states.append({"t": float(t), "bodies": bodies, "markers": markers})
-        self.states[-1]["loads"] = user_load_values(self.mbs, self.api, t)
+        if self.loads:
+            self.states[-1]["loads"] = user_load_values(self.mbs, self.api, t)
 
     def after_step(self, t: float) -> None:
         """Called from the harness's post-step hook: a state at the first step past each pending time."""

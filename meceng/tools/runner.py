@@ -92,7 +92,7 @@ def run(job_path: Path) -> int:
     result["system"] = system_summary(harness.mbs, harness.api)
     result["program_time"] = time.perf_counter() - t_start
     if job.get("inspect_times") is not None:
-        harness.inspector = start_inspection(harness, job["inspect_times"], result)
+        harness.inspector = start_inspection(harness, job["inspect_times"], result, bool(job.get("inspect_loads")))
     t_solve = time.perf_counter()
     try:
         harness.guard(True)  # the program's user functions run inside the solver
@@ -109,13 +109,13 @@ def run(job_path: Path) -> int:
     return 0
 
 
-def start_inspection(harness: Harness, times: list[float], result: dict[str, Any]) -> Any:
+def start_inspection(harness: Harness, times: list[float], result: dict[str, Any], loads: bool = False) -> Any:
     """The inspector's recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
     from meceng.tools.inspection import InspectionRecorder
 
     try:
         harness.guard(True)  # the system is the program's: read it under the same guard
-        recorder = InspectionRecorder(harness.mbs, harness.api, list(times))
+        recorder = InspectionRecorder(harness.mbs, harness.api, list(times), loads=loads)
         recorder.take(0.0, initial=True)
         return recorder
     except Exception as exc:
