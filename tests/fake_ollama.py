@@ -189,7 +189,9 @@ class FakeOllama:
         app.router.add_post("/v1/messages", self._chat)  # Anthropic's Messages API
         self._runner = web.AppRunner(app)
         await self._runner.setup()
-        site = web.TCPSite(self._runner, "127.0.0.1", 0)
+        # a listen backlog as large as a real server's (uvicorn: 2048): with aiohttp's 128, a burst of
+        # 256 new connections waits out the kernel's SYN retries (1 s, 3 s) for the rest
+        site = web.TCPSite(self._runner, "127.0.0.1", 0, backlog=2048)
         await site.start()
         port = site._server.sockets[0].getsockname()[1]  # type: ignore[union-attr]
         self.url = f"http://127.0.0.1:{port}"

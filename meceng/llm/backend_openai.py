@@ -17,7 +17,7 @@ from typing import Any
 import httpx
 
 from meceng.llm.messages import IMAGE_MEDIA_TYPE, pictures_after_tool_results
-from meceng.llm.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.scheduler import KEEPALIVE_S, TRANSIENT_STATUS, Endpoint, EndpointBackend
 from meceng.llm.types import (
     ChatRequest,
     ChatResponse,
@@ -68,8 +68,14 @@ class OpenAIBackend(EndpointBackend):
         if not api_key and any("api.openai.com" in host for host in settings.hosts):
             raise ValueError(f"OpenAI's API needs a key: set {settings.api_key_env or 'OPENAI_API_KEY'}")
         headers = {"Authorization": f"Bearer {api_key}"} if api_key else {}
-        super().__init__(settings, client_factory=lambda host: httpx.AsyncClient(
-            base_url=host.rstrip("/"), timeout=settings.timeout_s, headers=headers))
+
+        def client(host: str, connections: int) -> httpx.AsyncClient:
+            limits = httpx.Limits(max_connections=connections, max_keepalive_connections=connections,
+                                  keepalive_expiry=KEEPALIVE_S)
+            return httpx.AsyncClient(base_url=host.rstrip("/"), timeout=settings.timeout_s, headers=headers,
+                                     limits=limits)
+
+        super().__init__(settings, client_factory=client)
         self._overflow_told = False
 
     def request_body(self, host: str, request: ChatRequest) -> dict[str, Any]:
