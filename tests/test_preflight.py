@@ -76,3 +76,22 @@ def test_an_unknown_library_still_is_named_and_no_library_is_invented() -> None:
     message = explain([StackCheck("ground truth rigid (x@0)", False, "timeout after 60 s")], ("rigid",))
     assert "meceng doctor" in message and "missing system library" not in message
     assert all(name.startswith("lib") and ".so" in name for name in SYSTEM_LIBRARIES)
+
+
+async def test_a_sweep_without_libgl_stops_before_any_run_asks_its_server(tmp_path: Path,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    """Once per sweep, before any run: the sweep raises, no run folder gets a record, no request."""
+    from meceng.farm import SweepJob, run_sweep
+    from meceng.llm.types import LLMSettings
+    from meceng.pipeline import RunSettings
+    from meceng.pipeline.preflight import StackUnusable
+
+    monkeypatch.setenv("PYTHONPATH", no_libgl(tmp_path)["PYTHONPATH"])  # what the sandbox's children get
+    async with FakeOllama(lambda body: (200, openai_reply("never"), {})) as server:
+        jobs = [SweepJob(name, name, RunSettings(llm=LLMSettings(model=name, backend="ollama", hosts=(server.url,)),
+                                                 only=("single_pendulum",), variations=1, out=tmp_path,
+                                                 run_name=name, workers=1, progress=False), 1)
+                for name in ("m1", "m2")]
+        with pytest.raises(StackUnusable, match=r"libGL\.so\.1.*libgl1"):
+            await run_sweep(jobs, workers=1, display=False)
+    assert server.requests == [] and not (tmp_path / "m1").exists()

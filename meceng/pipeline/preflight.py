@@ -58,7 +58,6 @@ SYSTEM_LIBRARIES: dict[str, tuple[str, str]] = {
     "libz.so": ("zlib1g", "zlib"),
     "libcom_err.so": ("libcom-err2", "libcom_err"),
     "libgomp.so": ("libgomp1", "libgomp"),
-    "libopenblas.so": ("libopenblas0", "openblas"),
     "libstdc++.so": ("libstdc++6", "libstdc++"),
     "libgcc_s.so": ("libgcc-s1", "libgcc"),
 }
@@ -88,6 +87,36 @@ def missing_library(text: str) -> str | None:
             return f"{name} (Debian/Ubuntu: apt-get install {debian}; RHEL/Fedora: dnf install {rhel})"
         return f"{name} (find the package that provides it: apt-file search {name} / dnf provides '*/{name}')"
     return None
+
+
+def unlinked_libraries(modules: tuple[str, ...]) -> dict[str, list[str]]:
+    """System libraries (those of ``SYSTEM_LIBRARIES``) the compiled modules of ``modules`` need
+    and the dynamic linker does not find (``ldd``'s "not found"), per module; found without
+    importing anything. Only the system's: the wheels' own libraries (OpenCASCADE's ``libTK*``,
+    OpenBLAS, the optional CUDA ones) are found at import time and ``ldd`` misses them. Empty
+    where ``ldd`` is missing (not glibc): the import probe still tells."""
+    import glob
+    import importlib.util
+    import shutil
+    import subprocess
+
+    ldd = shutil.which("ldd")
+    missing: dict[str, list[str]] = {}
+    for name in dict.fromkeys(m.split(".")[0] for m in modules):
+        spec = importlib.util.find_spec(name)
+        if ldd is None or spec is None or not spec.submodule_search_locations:
+            continue
+        for folder in spec.submodule_search_locations:
+            for library in sorted(glob.glob(f"{folder}/*.so")):
+                try:
+                    out = subprocess.run([ldd, library], capture_output=True, text=True, timeout=30).stdout
+                except (OSError, subprocess.SubprocessError):
+                    continue
+                for line in out.splitlines():
+                    library_name = line.split()[0] if line.split() else ""
+                    if "not found" in line and re.sub(r"(\.\d+)+$", "", library_name) in SYSTEM_LIBRARIES:
+                        missing.setdefault(name, []).append(library_name)
+    return {name: sorted(set(libs)) for name, libs in missing.items()}
 
 
 def kinds_of(instances: list[TaskInstance]) -> tuple[str, ...]:
@@ -122,7 +151,8 @@ async def _probe(evaluator: Evaluator, modules: tuple[str, ...], example: TaskIn
         if line is None:  # the program never ran: the harness's own import of exudyn failed
             checks.append(StackCheck(f"import {name}", False, _failure(run)))
         else:
-            checks.append(StackCheck(f"import {name}", line.startswith("IMPORTED"), line.partition(name)[2].strip()))
+            ok = line.startswith("IMPORTED")
+            checks.append(StackCheck(f"import {name}", ok, "imported" if ok else line.partition(name)[2].strip()))
     return checks
 
 
