@@ -1,6 +1,6 @@
 """Connection pools sized to the batch: at ``--batch-size 256`` every backend has 256 requests in
 flight at once on one server (httpx's default pool of 100 connections used to cap the OpenAI
-backend at 100, whatever the batch size)."""
+backend at 100, whatever the batch size; the OpenAI and Anthropic backends now run on aiohttp)."""
 
 from __future__ import annotations
 
