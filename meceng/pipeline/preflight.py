@@ -17,6 +17,7 @@ import asyncio
 import re
 import tempfile
 from dataclasses import dataclass, replace
+from functools import cache
 from pathlib import Path
 
 from meceng.eval.chain import Tolerances
@@ -176,10 +177,13 @@ async def _ground_truth(evaluator: Evaluator, instance: TaskInstance) -> StackCh
     return StackCheck(name, ok, detail)
 
 
-def _cheapest(instances: list[TaskInstance], kind: str) -> TaskInstance:
-    """The instance of ``kind`` likely quickest to run: fewest parts, then the shortest ground-truth
-    program (a short program builds a small system or part)."""
-    return min((i for i in instances if i.kind == kind),
+@cache
+def _cheapest(kind: str) -> TaskInstance:
+    """The instance of ``kind`` likely quickest to run, among every task of the registry (the check
+    is of the stack, not of the run's tasks): fewest parts, then the shortest ground-truth program
+    (a short program builds a small system or part)."""
+    registry = default_registry()
+    return min((i for i in registry.instances(registry.select(None, None), 0, 1) if i.kind == kind),
                key=lambda i: (len(i.parts or ()), len(i.reference_program)))
 
 
@@ -189,11 +193,11 @@ async def check_stack(instances: list[TaskInstance], evaluator: Evaluator) -> li
     if not kinds:
         return []
     modules = tuple(dict.fromkeys(m for k in kinds for m in MODULES[k]))
-    checks = await _probe(evaluator, modules, _cheapest(instances, kinds[0]))
+    checks = await _probe(evaluator, modules, _cheapest(kinds[0]))
     if all(c.ok for c in checks):
         # an assembly's ground truth first makes its parts from theirs: it stands for the part kind too
         runs = [k for k in kinds if not (k == "part" and "assembly" in kinds)]
-        checks.extend(await asyncio.gather(*(_ground_truth(evaluator, _cheapest(instances, k)) for k in runs)))
+        checks.extend(await asyncio.gather(*(_ground_truth(evaluator, _cheapest(k)) for k in runs)))
     return checks
 
 
