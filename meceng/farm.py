@@ -37,6 +37,7 @@ from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.pipeline.grading import grading_pool
 from meceng.pipeline.lock import RunBusy
+from meceng.pipeline.preflight import ensure_sweep_stack
 from meceng.pipeline.services import SharedServices
 from meceng.pipeline.store import ReferenceStore
 from meceng.progress import Advance, live_display_enabled
@@ -194,6 +195,8 @@ async def run_sweep(jobs: list[SweepJob], workers: int, executor: str = "fork", 
         try:
             if grading is not None:
                 warming = asyncio.ensure_future(grading.warm())  # boots while the first runs start
+            # once for the sweep, before any run asks a server: a stack that cannot grade stops it here
+            await ensure_sweep_stack([job.settings for job in jobs], pool, shared.workers)
             groups = server_groups(jobs)
             await asyncio.gather(*(_drive(group, shared, servers, rank, screen, results) for group in groups))
         finally:

@@ -35,6 +35,7 @@ from meceng.farm import SweepJob, run_sweep
 from meceng.llm.types import DEFAULT_HOSTS
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
+from meceng.pipeline.preflight import StackUnusable
 from meceng.shard import Shard, pick
 from meceng.sweep import (
     GridPoint,
@@ -269,8 +270,12 @@ def main(argv: list[str] | None = None) -> int:
         return 3
     configure_logging(None)
     store = None if args.no_reference_store else (args.reference_store or spec.out / "references")
-    results = asyncio.run(run_sweep(sweep_jobs(points, spec, args, workers), workers, args.executor, store,
-                                    display=not args.no_progress))
+    try:
+        results = asyncio.run(run_sweep(sweep_jobs(points, spec, args, workers), workers, args.executor, store,
+                                        display=not args.no_progress))
+    except StackUnusable as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 3
     report_results(results)
     print(json.dumps(results, indent=1))
     return 1 if any("error" in r for r in results) else 0

@@ -138,6 +138,9 @@ class FakeOllama:
     _in_flight: int = 0
     _runner: web.AppRunner | None = None
     url: str = ""
+    # what the listing routes say (``meceng doctor``): the models served and their context
+    models: tuple[str, ...] = ("fake",)
+    context: int = 8192
 
     async def _chat(self, request: web.Request) -> web.StreamResponse:
         raw = await request.read()
@@ -169,6 +172,32 @@ class FakeOllama:
             return web.Response(status=status, text=payload, content_type="application/json", headers=headers)
         return web.json_response(payload, status=status, headers=headers)
 
+    async def _listing(self, request: web.Request) -> web.StreamResponse:
+        """Ollama's version and tags; the OpenAI-compatible model list as vLLM gives it."""
+        if request.path == "/api/version":
+            return web.json_response({"version": "0.12.0"})
+        if request.path == "/api/tags":
+            return web.json_response({"models": [{"name": m if ":" in m else f"{m}:latest"} for m in self.models]})
+        return web.json_response({"object": "list", "data": [{"id": m, "object": "model",
+                                                              "max_model_len": self.context} for m in self.models]})
+
+    async def _show(self, request: web.Request) -> web.StreamResponse:
+        name = (await request.json()).get("model", "")
+        if name.split(":")[0] not in {m.split(":")[0] for m in self.models}:
+            return web.json_response({"error": f"model '{name}' not found"}, status=404)
+        return web.json_response({"model_info": {"llama.context_length": self.context}})
+
+    async def _model(self, request: web.Request) -> web.StreamResponse:
+        refused = self.refuse(request)
+        if refused is not None:
+            return refused
+        name = request.match_info["name"]
+        if name not in self.models:
+            return web.json_response({"type": "error", "error": {"type": "not_found_error",
+                                                                  "message": f"model: {name}"}}, status=404)
+        return web.json_response({"type": "model", "id": name, "display_name": name,
+                                  "created_at": "2026-01-01T00:00:00Z"})
+
     def refuse(self, request: web.Request) -> web.StreamResponse | None:
         """An answer given before the responder sees the request (authentication); None: go on."""
         return None
@@ -187,9 +216,16 @@ class FakeOllama:
         app.router.add_post("/api/chat", self._chat)
         app.router.add_post("/v1/chat/completions", self._chat)  # the OpenAI-compatible route
         app.router.add_post("/v1/messages", self._chat)  # Anthropic's Messages API
+        app.router.add_get("/api/version", self._listing)
+        app.router.add_get("/api/tags", self._listing)
+        app.router.add_post("/api/show", self._show)
+        app.router.add_get("/v1/models/{name}", self._model)  # Anthropic's Models API
+        app.router.add_get("/v1/models", self._listing)
         self._runner = web.AppRunner(app)
         await self._runner.setup()
-        site = web.TCPSite(self._runner, "127.0.0.1", 0)
+        # a listen backlog as large as a real server's (uvicorn: 2048): with aiohttp's 128, a burst of
+        # 256 new connections waits out the kernel's SYN retries (1 s, 3 s) for the rest
+        site = web.TCPSite(self._runner, "127.0.0.1", 0, backlog=2048)
         await site.start()
         port = site._server.sockets[0].getsockname()[1]  # type: ignore[union-attr]
         self.url = f"http://127.0.0.1:{port}"

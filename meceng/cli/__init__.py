@@ -1,6 +1,7 @@
-"""Command line: ``meceng tasks|evaluate|drafts|run|report|view|rescore``.
+"""Command line: ``meceng tasks|evaluate|drafts|run|report|view|rescore|doctor``.
 
-Exit codes: 0 success, 1 the graded program failed (``evaluate``), 2 wrong usage or unknown task.
+Exit codes: 0 success, 1 the graded program failed (``evaluate``) or a check failed (``doctor``), 2 wrong
+usage or unknown task, 3 this machine cannot grade the chosen levels (the preflight of ``run``/``rescore``).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from meceng.cli.commands import (
     cmd_view,
     print_summary,
 )
+from meceng.cli.doctor import add_doctor_arguments, cmd_doctor
 
 __all__ = ["build_parser", "console_main", "exit_now", "main", "parse_levels", "parse_think", "positive_int",
            "print_summary"]
@@ -116,6 +118,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--reference-store", dest="store", type=Path, default=None,
                    help="a reference store (a sweep's references/ folder): ground truths made once are reused")
     p.set_defaults(func=cmd_rescore)
+
+    p = sub.add_parser("doctor", help="check this machine and the servers before a sweep: system libraries, "
+                       "the stack in the sandbox, one ground truth per task kind, model served, context")
+    add_doctor_arguments(p)
+    p.set_defaults(func=cmd_doctor)
 
     p = sub.add_parser("run", help="run the benchmark for one model")
     add_run_arguments(p)

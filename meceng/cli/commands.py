@@ -133,6 +133,7 @@ def cmd_drafts(args: argparse.Namespace) -> int:
 def cmd_run(args: argparse.Namespace) -> int:
     from meceng.logs import configure_logging
     from meceng.pipeline import run_benchmark
+    from meceng.pipeline.preflight import StackUnusable
 
     try:
         settings = resumed_settings(args) if args.resume else run_settings(args, llm_settings(args))
@@ -145,6 +146,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    except StackUnusable as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 3
     configure_logging(None)
     print_summary(path)
     return 0
@@ -232,6 +236,7 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 def cmd_rescore(args: argparse.Namespace) -> int:
     from meceng.pipeline import rescore
+    from meceng.pipeline.preflight import StackUnusable
 
     if not args.run_dir.exists():
         print(f"error: {args.run_dir} does not exist (a run's folder or its run.json)", file=sys.stderr)
@@ -241,7 +246,12 @@ def cmd_rescore(args: argparse.Namespace) -> int:
         print(f"error: {run_dir} holds no run.json", file=sys.stderr)
         return 2
     workers = args.workers or max(1, os.cpu_count() or 1)
-    path = asyncio.run(rescore(run_dir, workers=workers, executor=args.executor, store=args.store, progress=True))
+    try:
+        path = asyncio.run(rescore(run_dir, workers=workers, executor=args.executor, store=args.store,
+                                   progress=True))
+    except StackUnusable as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 3
     print_summary(path)
     return 0
 

@@ -14,7 +14,7 @@ from typing import Any
 import aiohttp
 
 from meceng.llm.messages import pictures_after_tool_results
-from meceng.llm.scheduler import TRANSIENT_STATUS, Endpoint, EndpointBackend
+from meceng.llm.scheduler import KEEPALIVE_S, TRANSIENT_STATUS, Endpoint, EndpointBackend
 from meceng.llm.types import ChatRequest, ChatResponse, LLMError, LLMSettings, ToolCall, parse_retry_after
 
 
@@ -28,10 +28,13 @@ class OllamaBackend(EndpointBackend):
         self._session: aiohttp.ClientSession | None = None
 
     def _http(self) -> aiohttp.ClientSession:
-        """The shared session, made inside the running loop; the slots bound its connections."""
+        """The shared session, made inside the running loop: one connection per slot on each host
+        (the slots bound the requests; the pool keeps their connections alive between requests)."""
         if self._session is None:
+            pool = max(e.capacity for e in self.endpoints)
             self._session = aiohttp.ClientSession(
-                connector=aiohttp.TCPConnector(limit=0, keepalive_timeout=60),
+                connector=aiohttp.TCPConnector(limit=pool * len(self.endpoints), limit_per_host=pool,
+                                               keepalive_timeout=KEEPALIVE_S),
                 timeout=aiohttp.ClientTimeout(total=self.settings.timeout_s))
         return self._session
 

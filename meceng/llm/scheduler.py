@@ -32,6 +32,9 @@ log = get_logger(__name__)
 # 529: Anthropic's "overloaded"
 TRANSIENT_STATUS = frozenset({408, 425, 429, 500, 502, 503, 504, 529})
 SILENT_AFTER = 3  # requests in a row without any answer before the endpoint's requests are refused unsent
+# how long an idle connection stays open: between two requests of a slot (an answer parsed, the next
+# prompt built) a connection idles a few ms to seconds; closing it would cost a new TCP handshake
+KEEPALIVE_S = 60.0
 
 
 class PrioritySlots:
@@ -123,10 +126,15 @@ class EndpointBackend:
     name = "endpoints"
 
     def __init__(self, settings: LLMSettings, client_factory: Any = None) -> None:
+        """``client_factory(host, connections)`` makes a host's HTTP client with a pool of
+        ``connections`` (idle ones kept alive): one per slot, so that no client pool caps the batch
+        size (httpx's default pool of 100 kept a run at ``--batch-size 128`` at 100 in flight)."""
         self.settings = settings
+        self._client_factory = client_factory
+        capacity = max(1, settings.batch_size)
         self.endpoints = [
-            Endpoint(host=h.rstrip("/"), client=client_factory(h) if client_factory else None,
-                     slots=PrioritySlots(settings.batch_size), capacity=settings.batch_size)
+            Endpoint(host=h.rstrip("/"), client=client_factory(h, capacity) if client_factory else None,
+                     slots=PrioritySlots(capacity), capacity=capacity)
             for h in settings.hosts
         ]
         self._pick_lock = asyncio.Lock()
@@ -138,6 +146,9 @@ class EndpointBackend:
         ``rank`` orders this backend's waiting requests against the other runs'."""
         for endpoint in self.endpoints:
             endpoint.slots = servers.setdefault(endpoint.host, PrioritySlots(endpoint.capacity))
+            if endpoint.slots.capacity != endpoint.capacity and self._client_factory is not None:
+                # still unused (no request yet): a pool the size of the shared slots instead
+                endpoint.client = self._client_factory(endpoint.host, endpoint.slots.capacity)
             endpoint.capacity = endpoint.slots.capacity
         self.rank = rank
 

@@ -11,6 +11,7 @@ Modules, each one concern:
 - ``rundir``: the run folder (journal, programs, parts, run.json);
 - ``run``: the run loop (``run_benchmark``) and what ``--resume`` keeps;
 - ``rescore``: grading outside a run (``evaluate_program``, ``rescore``);
+- ``preflight``: before the first LLM request, whether this machine can grade the levels;
 - ``prompting``: the prompts a model gets for one instance (``meceng tasks prompt``, the prompt lint).
 """
 

@@ -25,6 +25,7 @@ from .evaluation import Evaluator
 from .grading import grading_pool as make_grading_pool
 from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
+from .preflight import ensure_stack
 from .rundir import record_key, write_atomic
 from .store import ReferenceStore
 from .traces import save_traces
@@ -116,6 +117,9 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
         return regraded
 
     try:
+        graded = [instance_of(r) for r in run["tasks"]
+                  if r.get("first_failure") != "infrastructure" and "generation" in r]
+        await ensure_stack(graded, evaluator)  # a stack that cannot grade must not overwrite run.json
         with progress_bar(len(run["tasks"]), f"rescore {run_dir.name}", enabled=progress, tokens=False) as advance:
             run["tasks"] = list(await asyncio.gather(*(counted(r, advance) for r in run["tasks"])))
     finally:

@@ -35,6 +35,7 @@ from .evaluation import Evaluator
 from .flow import FlowContext, run_instance
 from .grading import grading_pool
 from .lock import HEARTBEAT_S, RunLock
+from .preflight import ensure_stack
 from .records import failed_record
 from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
 from .services import ProgressFactory, SharedServices
@@ -119,6 +120,18 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           slots=shared.workers if shared is not None else None,
                           store=shared.store if shared is not None else None,
                           grading=shared.grading if shared is not None else grading_pool(settings.workers))
+    # a stack that cannot grade stops here, before any LLM request (a gold run asks no server)
+    if settings.preflight and settings.llm.backend != "gold" and todo:
+        try:
+            await ensure_stack(todo, evaluator)
+        except BaseException:
+            if own_pool and pool is not None:
+                await pool.close()
+            if shared is None and evaluator.grading is not None:
+                await asyncio.to_thread(evaluator.grading.close)
+            if own_backend:
+                await backend.aclose()
+            raise
     if settings.agent == "repair":  # the tasks are the instances' failing drafts, graded before the first request
         instances = await repair_instances(instances, evaluator, settings.drafts_per_task)
         todo = [i for i in instances if i.key not in done_keys]

@@ -32,6 +32,9 @@ class RunSettings:
     # a resume on a server the user named (--resume --host): prompts that did not fit the old
     # server's context are asked again; how a run is continued, not what it measures (not saved)
     retry_overflow: bool = False
+    # check, before the first LLM request, that this machine can grade the levels (pipeline/preflight.py);
+    # how a run is started, not what it measures (not saved)
+    preflight: bool = True
     executor: str = "fork"
     agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code;
     # "repair": the repair benchmark (a draft with a seeded fault to find and fix)
