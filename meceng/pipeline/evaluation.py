@@ -20,6 +20,7 @@ import numpy as np
 
 from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
 from meceng.catalog.component import Catalog
+from meceng.eval.behaviour import tolerance_for
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
 from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
@@ -30,6 +31,10 @@ from meceng.tools.warm import WarmPool
 
 from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
+
+#: Samples of the bodies' motion per execution (fewer when a system has many bodies:
+#: ``tools/inspection.MOTION_BUDGET``).
+MOTION_SAMPLES = 201
 
 
 class ReferenceCache:
@@ -104,11 +109,16 @@ class Evaluator:
         if instance.kind != "assembly":  # an assembly's reference needs the parts the LLM makes first
             self.references.start(instance)
 
+    def graded_limits(self, instance: TaskInstance) -> ExecutionLimits:
+        """The limits a graded level 1-2/3b program runs under: the states at t = 0 and at the end
+        (the viewer's pictures of the system) and every body's motion on a grid (the behaviour
+        verdict); reading them does not touch the solution."""
+        return replace(self.limits, inspect_times=(instance.sim.end_time,),
+                       motion_grid=(instance.sim.end_time, MOTION_SAMPLES))
+
     async def execute(self, program: str, instance: TaskInstance, check: bool,
                       files: dict[str, Path] | None = None) -> Execution:
-        # the states at t = 0 and at the end: the viewer's pictures of the system (reading them does not
-        # touch the solution)
-        limits = replace(self.limits, inspect_times=(instance.sim.end_time,))
+        limits = self.graded_limits(instance)
         return await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files,
                              slots=self.slots)
 
@@ -131,7 +141,10 @@ class Evaluator:
 
         if self.store is None:
             return await run()
-        limits = replace(self.part_limits, n_modes=instance.part.n_modes) if instance.kind == "part" else self.limits
+        if instance.kind == "part":
+            limits = replace(self.part_limits, n_modes=instance.part.n_modes)
+        else:
+            limits = self.graded_limits(instance)
         sim = "" if instance.kind == "part" else instance.sim.block()
         return await self.store.fetch(reference_key(program, sim, limits), run)
 
@@ -162,6 +175,7 @@ class Evaluator:
             self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
             steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
+            behaviour=tolerance_for(instance.slug),
         )
         return verdict, candidate, reference
 

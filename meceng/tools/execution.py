@@ -25,6 +25,8 @@ class ExecutionLimits:
     save_fem_to: str | None = None  # part mode: keep the program's reduced FEMinterface here (.npz)
     # the model inspector: body and marker states at t = 0 and at these times (None: not recorded)
     inspect_times: tuple[float, ...] | None = None
+    # the behaviour comparison: every body's motion on a grid of (end time, samples) (None: not recorded)
+    motion_grid: tuple[float, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -56,6 +58,9 @@ class Execution:
     wall_time: float = 0.0
     solve_time: float | None = None
     inspection: dict[str, Any] | None = None  # the model inspector's states (ExecutionLimits.inspect_times)
+    # the bodies' motion (ExecutionLimits.motion_grid): "bodies" (index, type, mass, inertia, com),
+    # "t" (n,) and "states" (n, bodies, 18: centre of mass, velocity, angular velocity, rotation)
+    motion: dict[str, Any] | None = None
 
     @property
     def finished_assemble(self) -> bool:
