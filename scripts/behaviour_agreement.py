@@ -112,8 +112,9 @@ def table(rows: list[dict[str, Any]]) -> str:
         lines.append("")
         lines.append("Disagreements:")
         for r in disagreements:
-            said = f"paper {'passes' if r['paper'] else 'fails at ' + str(r['first_failure'])}, behaviour " + \
-                   f"{'passes' if r['behaviour'] else 'fails'} (largest: {r['quantity']} at {r['ratio']} of its tolerance)"
+            paper = "passes" if r["paper"] else f"fails at {r['first_failure']}"
+            said = f"paper {paper}, behaviour {'passes' if r['behaviour'] else 'fails'} " \
+                   f"(largest: {r['quantity']} at {r['ratio']} of its tolerance)"
             lines.append(f"- {r['name']}: {said}")
     return "\n".join(lines)
 

@@ -66,7 +66,8 @@ def test_a_late_divergence_is_found_when_it_happens_and_a_horizon_ends_the_compa
     late = circle(1.0)
     late[T > 1.5] += np.array([0.0, 0.05, 0.0])
     verdict = compare_behaviour(motion(body(0, 1.0, None, late)), motion(truth))
-    assert verdict.passed is False and abs(verdict.first_divergence.time - 1.5) <= 0.021  # the velocity jumps a sample early
+    # the finite-difference velocity jumps a sample early
+    assert verdict.passed is False and abs(verdict.first_divergence.time - 1.5) <= 0.021
     assert compare_behaviour(motion(body(0, 1.0, None, late)), motion(truth),
                              BehaviourTolerance(horizon=0.7)).passed
 
@@ -165,3 +166,37 @@ async def test_every_draft_that_moves_otherwise_fails_behaviour(slug: str) -> No
         verdict, candidate, reference = await evaluator.evaluate(instance, draft.program, None, None)
         if verdict.behaviour["passed"]:
             assert _same_motion(candidate, reference), (draft.id, verdict.behaviour)
+
+
+def test_meceng_evaluate_prints_behaviour_beside_the_paper_s_verdict(tmp_path) -> None:
+    """A program that builds the same system another way: the paper's verdict fails it (the contact's
+    radii in the other order), behaviour passes; the exit status stays the paper's."""
+    import json
+    import subprocess
+    import sys
+
+    alternative = next(a for a in ALTERNATIVES if a.slug == "sphere_sphere_impact")
+    path = tmp_path / "program.py"
+    path.write_text(alternative.program(default_registry().get(alternative.slug).instance(2)))
+    command = [sys.executable, "-m", "meceng", "evaluate", alternative.slug, "--seed", "2", "--code", str(path)]
+    proc = subprocess.run([*command, "--json"], capture_output=True, text=True, timeout=120)
+    data = json.loads(proc.stdout)
+    assert proc.returncode == 1 and data["overall"] is False
+    assert data["behaviour"]["passed"] is True and data["behaviour"]["matching"]
+    text = subprocess.run(command, capture_output=True, text=True, timeout=120).stdout
+    assert "behaviour: [pass]" in text
+
+
+def test_the_summary_counts_behaviour_and_names_the_disagreements() -> None:
+    from meceng.eval.aggregate import summarize
+
+    def record(slug: str, level: str, overall: bool, behaviour: bool | None) -> dict:
+        return {"slug": slug, "level": level, "seed": 0, "overall": overall, "first_failure": None if overall else
+                "graph_content_match", "stages": [], **({} if behaviour is None else
+                                                        {"behaviour": {"passed": behaviour, "detail": "d"}})}
+
+    summary = summarize([record("a", "1", True, True), record("b", "1", False, True), record("c", "2", False, False),
+                         record("d", "3a", True, None)])["behaviour"]
+    assert (summary["graded"], summary["passed"], summary["both_fail"], summary["behaviour_only"]) == (3, 2, 1, 1)
+    assert summary["levels"] == {"1": 1.0, "2": 0.0}
+    assert [d["slug"] for d in summary["disagreements"]] == ["b"]
