@@ -200,3 +200,28 @@ def test_the_summary_counts_behaviour_and_names_the_disagreements() -> None:
     assert (summary["graded"], summary["passed"], summary["both_fail"], summary["behaviour_only"]) == (3, 2, 1, 1)
     assert summary["levels"] == {"1": 1.0, "2": 0.0}
     assert [d["slug"] for d in summary["disagreements"]] == ["b"]
+
+
+def test_the_report_has_a_behaviour_column_and_names_the_disagreements(tmp_path) -> None:
+    import json
+
+    from meceng.report import build_report
+
+    def record(slug: str, level: str, overall: bool, behaviour: bool | None) -> dict:
+        return {"level": level, "slug": slug, "seed": 0, "overall": overall,
+                "first_failure": None if overall else "graph_content_match",
+                "stages": [{"name": "choose_components", "passed": True}], "error_categories": [],
+                **({} if behaviour is None else {"behaviour": {"passed": behaviour, "detail": f"{slug} moves"}})}
+
+    settings = {"llm": {"model": "m", "temperature": 0, "think": False},
+                "prompt": {"select_template": "CI1", "code_template": "MBS1"}}
+    tasks = [record("a", "1", True, True), record("b", "2", False, True), record("c", "3b", False, False),
+             record("d", "3a", False, None)]
+    (tmp_path / "run").mkdir()
+    (tmp_path / "run" / "run.json").write_text(json.dumps({"settings": settings, "summary": {}, "tasks": tasks}))
+    build_report([tmp_path / "run"], tmp_path / "report")
+    text = (tmp_path / "report" / "report.md").read_text()
+    section = text.split("## Behaviour beside the paper's verdict")[1].split("## ")[0]
+    assert "| 3 |" in section and "66.7" in section  # levels 1, 2, 3b: 2 of 3 pass behaviour
+    differ = text.split("## Where the two verdicts differ")[1].split("## ")[0]
+    assert "b@0" in differ and "b moves" in differ and "a@0" not in differ and "c@0" not in differ
