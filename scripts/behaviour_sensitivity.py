@@ -11,7 +11,11 @@ Each is compared with the behaviour comparison; printed is the largest deviation
 the ground truth's scales (the quantity ``relative`` bounds; the tolerance is 1e-3), and for
 round-off the time at which it first passes the tolerance (the horizon a sensitive task needs).
 
-    python scripts/behaviour_sensitivity.py [--levels 1,2] [--slugs a,b] [--json FILE]
+With ``--alternatives N``: instead, every level 1-2 alternative (``tasks/alternatives.py``) at seeds
+0..N-1, compared over the whole simulated time (no horizon): when, if ever, round-off lets the
+system built another way part from the ground truth (the scooter's unstable upright equilibrium).
+
+    python scripts/behaviour_sensitivity.py [--levels 1,2] [--slugs a,b] [--alternatives N] [--json FILE]
 """
 
 from __future__ import annotations
@@ -103,6 +107,34 @@ async def run(slugs: list[str]) -> list[dict[str, Any]]:
     return out
 
 
+async def alternatives(seeds: int) -> list[dict[str, Any]]:
+    from meceng.tasks.alternatives import ALTERNATIVES
+
+    pool = WarmPool(child_env())
+    evaluator = Evaluator(2, ExecutionLimits(timeout_s=120), Tolerances(), pool=pool)
+    out = []
+    try:
+        for alternative in ALTERNATIVES:
+            if default_registry().get(alternative.slug).level not in ("1", "2"):
+                continue
+            parts, largest = [], 0.0
+            for seed in range(seeds):
+                instance = default_registry().get(alternative.slug).instance(seed)
+                truth = await evaluator.execute(instance.reference_program, instance, check=False)
+                run = await evaluator.execute(alternative.program(instance), instance, check=False)
+                verdict = compare_behaviour(run.motion, truth.motion, BehaviourTolerance(relative=RELATIVE)).to_json()
+                fraction, at = _fraction(verdict)
+                largest = max(largest, fraction)
+                if at is not None:
+                    parts.append((seed, at / instance.sim.end_time))
+            out.append({"alternative": alternative.id, "seeds": seeds, "largest": largest, "parts": parts})
+            print(".", end="", file=sys.stderr, flush=True)
+    finally:
+        await pool.close()
+    print(file=sys.stderr)
+    return out
+
+
 def _g(value: float | None) -> str:
     return "-" if value is None else f"{value:.2g}"
 
@@ -111,8 +143,20 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--levels", default="1,2")
     parser.add_argument("--slugs", default="")
+    parser.add_argument("--alternatives", type=int, default=0, help="seeds per alternative (0: the sensitivity table)")
     parser.add_argument("--json", type=Path)
     args = parser.parse_args()
+    if args.alternatives:
+        found = asyncio.run(alternatives(args.alternatives))
+        print("| alternative | seeds | largest deviation (fraction of scales) | parts from the ground truth (seed: "
+              "fraction of the time) |")
+        print("|---|---:|---:|---|")
+        for r in found:
+            parts = ", ".join(f"{s}: {f:.2f}" for s, f in r["parts"]) or "never"
+            print(f"| {r['alternative']} | {r['seeds']} | {_g(r['largest'])} | {parts} |")
+        if args.json:
+            args.json.write_text(json.dumps(found, indent=1))
+        return 0
     slugs = args.slugs.split(",") if args.slugs else [m.slug for m in default_registry().select(args.levels.split(","))]
     rows = asyncio.run(run(slugs))
     print("| task model | round-off 1e-10 | parts at (s) | 2x steps | +4 % one parameter: least (which) | median |")

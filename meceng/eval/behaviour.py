@@ -26,6 +26,8 @@ from meceng.eval.bodies import BodyMotion, Scales, match_bodies, read_bodies, sc
 #: Two moments closer than this (relative to the largest) make a symmetric body: its axes in
 #: that plane are not compared.
 DEGENERATE = 1e-6
+#: A flexible body's interface points are compared within this many ``relative`` of their travel.
+DEFORMATION = 10.0
 
 
 @dataclass(frozen=True)
@@ -49,7 +51,7 @@ class Deviation:
 
     body: int  # the ground truth's object number
     candidate_body: int
-    quantity: str  # position, velocity, angular_velocity, axis
+    quantity: str  # position, velocity, angular_velocity, axis, deformation
     value: float
     tolerance: float
     time: float
@@ -125,7 +127,30 @@ def _pair_errors(candidate: BodyMotion, truth: BodyMotion, n: int, scale: Scales
         angles = _axis_angles(candidate, truth, n)
         if angles is not None:
             out.append(("axis", angles, min(relative * scale.length / size, 0.5)))
+    deformation = _point_deviation(candidate, truth, n, relative * scale.length)
+    if deformation is not None and truth.points is not None:
+        # deflections are small beside the system: within DEFORMATION x relative of the farthest a
+        # ground-truth interface point travels (a clamped beam: its tip's swing; a swinging one: its arc)
+        travel = max(float(np.linalg.norm(np.ptp(truth.points[:, j], axis=0))) for j in range(truth.points.shape[1]))
+        out.append(("deformation", deformation, max(DEFORMATION * relative * travel, 1e-12)))
     return out
+
+
+def _point_deviation(candidate: BodyMotion, truth: BodyMotion, n: int, near: float) -> np.ndarray | None:
+    """(n,) a flexible body's deformation: how far the ground truth's interface points (its markers on
+    the mesh) lie from the candidate's that start at the same place; points the candidate has no
+    marker at are not observed."""
+    if truth.points is None or candidate.points is None:
+        return None
+    worst = None
+    for j in range(truth.points.shape[1]):
+        distance = np.linalg.norm(candidate.points[0] - truth.points[0, j], axis=1)
+        i = int(np.argmin(distance))
+        if distance[i] > near:
+            continue
+        deviation = np.linalg.norm(candidate.points[:n, i] - truth.points[:n, j], axis=1)
+        worst = deviation if worst is None else np.maximum(worst, deviation)
+    return worst
 
 
 def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dict[str, Any] | None,

@@ -33,6 +33,7 @@ class BodyMotion:
     v: np.ndarray  # (n, 3) its velocity
     w: np.ndarray | None  # (n, 3) angular velocity (None: a mass point)
     rotation: np.ndarray | None  # (n, 3, 3) body to global
+    points: np.ndarray | None = None  # (n, m, 3) a flexible body's interface markers: its deformation
 
     @property
     def size(self) -> float:
@@ -78,6 +79,8 @@ def read_bodies(motion: dict[str, Any] | None) -> list[BodyMotion] | None:
         return None
     states = np.asarray(motion["states"], dtype=float)
     t = np.asarray(motion["t"], dtype=float)
+    points = np.asarray(motion.get("points", np.zeros((len(t), 0, 3))), dtype=float)
+    owners = np.asarray(motion.get("point_bodies", np.zeros(0, dtype=int)), dtype=int)
     out = []
     for k, body in enumerate(motion.get("bodies", [])):
         mass = float(body.get("mass") or 0.0)
@@ -87,8 +90,9 @@ def read_bodies(motion: dict[str, Any] | None) -> list[BodyMotion] | None:
         rotation = rows[:, 9:18].reshape(-1, 3, 3) if np.all(np.isfinite(rows[:, 9:18])) else None
         if w is None:
             principal, axes = None, None
+        own = points[:, owners == k, :] if points.ndim == 3 and len(owners) == points.shape[1] else None
         out.append(BodyMotion(int(body.get("index", k)), str(body.get("type", "")), mass, principal, axes, t,
-                              rows[:, 0:3], rows[:, 3:6], w, rotation))
+                              rows[:, 0:3], rows[:, 3:6], w, rotation, own if own is not None and own.size else None))
     return out
 
 

@@ -103,6 +103,15 @@ ALTERNATIVES: tuple[Alternative, ...] = (
          "itemNumbers=[oSphere1, oSphere0], spheresRadii=[radius1, radius0]"),)),
     Alternative("newtons_cradle", "contacts with their items swapped", "markers", (
         ("itemNumbers=[spheres[i], spheres[i + 1]]", "itemNumbers=[spheres[i + 1], spheres[i]]"),)),
+    Alternative("non_steerable_scooter_with_ideal_rolling", "wheel axes along local z, rotated back", "frame", (
+        ("""                                      referenceRotationMatrix=np.eye(3),
+                                      initialVelocity=[velocity, 0, 0],
+                                      initialAngularVelocity""",
+         """                                      referenceRotationMatrix=RotationMatrixX(-np.pi / 2),
+                                      initialVelocity=[velocity, 0, 0],
+                                      initialAngularVelocity"""),
+        ("outerRadius=r, axis=1)", "outerRadius=r, axis=2)"),
+        ("axisPosition=[0, 0, 0], axisVector=[0, 1, 0]", "axisPosition=[0, 0, 0], axisVector=[0, 0, 1]"),)),
     # level 3b
     Alternative("flexible_pendulum", "hinge markers swapped", "markers", (
         ("markerNumbers=[mHinge, beam['beam:left']]", "markerNumbers=[beam['beam:left'], mHinge]"),)),

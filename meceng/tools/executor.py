@@ -253,7 +253,7 @@ def _collect(
     motion_path = scratch / f"motion-{token}.npz"
     if isinstance(motion, dict) and motion_path.exists():
         with parsing(), np.load(motion_path) as data:
-            motion = {**motion, "t": data["t"], "states": data["states"]}
+            motion = {**motion, **{key: data[key] for key in data.files}}
     fem_file = None
     fem_path = scratch / f"fem-{token}.npz"
     if limits.save_fem_to and fem_path.exists():

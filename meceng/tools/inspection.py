@@ -160,9 +160,21 @@ class MotionRecorder:
                 continue
             if (kind in BODY_TYPES and kind != "Ground") or kind in FLEXIBLE_TYPES:
                 self.bodies.append(self._describe(index, kind, item))
-        count = max(2, min(int(samples), MOTION_BUDGET // max(1, _MOTION_WIDTH * len(self.bodies))))
+        # a flexible body's deformation: the global positions of the markers on its mesh (its interfaces)
+        flexible = {b["index"]: k for k, b in enumerate(self.bodies) if b["type"] in FLEXIBLE_TYPES}
+        self.points: list[tuple[int, int]] = []  # (marker, position of its body in ``bodies``)
+        if flexible:
+            for m in range(min(api["NumberOfMarkers"](mbs.systemData), _MAX_MARKERS)):
+                marker = api["GetMarker"](mbs, m)
+                body = marker.get("bodyNumber")
+                if str(marker.get("markerType", "")).startswith("SuperElement") and body is not None and \
+                        int(body) in flexible:
+                    self.points.append((m, flexible[int(body)]))
+        width = _MOTION_WIDTH * len(self.bodies) + 3 * len(self.points)
+        count = max(2, min(int(samples), MOTION_BUDGET // max(1, width)))
         self.grid = list(np.linspace(0.0, float(end_time), count)) if end_time > 0 else [0.0]
         self.rows: list[np.ndarray] = []
+        self.point_rows: list[np.ndarray] = []
         self.times: list[float] = []
         self.failed: str | None = None
 
@@ -210,6 +222,19 @@ class MotionRecorder:
                 row[k, 3:6] += np.cross(row[k, 6:9], arm)
         return row
 
+    def _points(self, initial: bool) -> np.ndarray:
+        configuration = self.api["ConfigurationType"].Initial if initial else self.current
+        out = np.full((len(self.points), 3), np.nan)
+        for k, (marker, _) in enumerate(self.points):
+            try:
+                value = np.asarray(self.api["GetMarkerOutput"](self.mbs, marker, self.out.Position,
+                                                               configuration=configuration), dtype=float).ravel()
+            except Exception:
+                continue
+            if value.size == 3:
+                out[k] = value
+        return out
+
     def after_step(self, t: float, initial: bool = False) -> None:
         """Called from the harness's post-step hook, and with ``initial`` once before the solve."""
         if self.failed is not None:
@@ -221,12 +246,16 @@ class MotionRecorder:
                 continue
             try:
                 self.rows.append(self._sample(initial))
+                self.point_rows.append(self._points(initial))
             except Exception as exc:  # never a failed run for the inspector's sake
                 self.failed = f"{type(exc).__name__}: {exc}"
                 return
             self.times.append(float(t))
 
     def arrays(self) -> dict[str, np.ndarray]:
-        """The record as arrays: ``t`` (n), ``states`` (n, bodies, 18: p, v, w, rotation row-major)."""
+        """The record as arrays: ``t`` (n), ``states`` (n, bodies, 18: p, v, w, rotation row-major),
+        ``points`` (n, markers, 3) and ``point_bodies`` (the body of each, its position in ``bodies``)."""
         states = np.stack(self.rows) if self.rows else np.zeros((0, len(self.bodies), _MOTION_WIDTH))
-        return {"t": np.asarray(self.times, dtype=float), "states": states}
+        points = np.stack(self.point_rows) if self.point_rows else np.zeros((0, len(self.points), 3))
+        return {"t": np.asarray(self.times, dtype=float), "states": states, "points": points,
+                "point_bodies": np.asarray([k for _, k in self.points], dtype=int)}
