@@ -225,3 +225,26 @@ def test_the_report_has_a_behaviour_column_and_names_the_disagreements(tmp_path)
     assert "| 3 |" in section and "66.7" in section  # levels 1, 2, 3b: 2 of 3 pass behaviour
     differ = text.split("## Where the two verdicts differ")[1].split("## ")[0]
     assert "b@0" in differ and "b moves" in differ and "a@0" not in differ and "c@0" not in differ
+
+
+ASSEMBLY_ALTERNATIVES = [a for a in ALTERNATIVES if default_registry().get(a.slug).level == "3b"]
+#: one assembly in the default suite (its part takes ~10 s to make), the others in the slow one
+CHEAP_ASSEMBLIES = ("flexible_pendulum",)
+
+
+async def _assembly_verdicts(slug: str, programs: list[str], tmp_path) -> list:
+    instance = default_registry().get(slug).instance(0)
+    evaluator = Evaluator(2, ExecutionLimits(timeout_s=300), Tolerances())
+    files = await evaluator.ground_truth_parts(instance, tmp_path)
+    return [(await evaluator.evaluate(instance, program(instance), None, None, files=files))[0]
+            for program in programs]
+
+
+@pytest.mark.parametrize("slug", [pytest.param(m.slug, marks=[] if m.slug in CHEAP_ASSEMBLIES else [pytest.mark.slow])
+                                  for m in default_registry().select(["3b"])])
+@pytest.mark.timeout(900)
+async def test_assembly_gold_and_its_alternatives_pass_behaviour(slug: str, tmp_path) -> None:
+    programs = [lambda i: i.reference_program, *[a.program for a in ASSEMBLY_ALTERNATIVES if a.slug == slug]]
+    verdicts = await _assembly_verdicts(slug, programs, tmp_path)
+    assert verdicts[0].overall, verdicts[0].first_failure
+    assert all(v.behaviour["passed"] for v in verdicts), [v.behaviour for v in verdicts]

@@ -38,7 +38,12 @@ class BehaviourTolerance:
 
 #: Task models whose ground truth is itself sensitive (see README, "Behaviour"): the fraction of
 #: the simulated time compared. Measured with scripts/behaviour_sensitivity.py.
-BEHAVIOUR_HORIZONS: dict[str, float] = {}
+BEHAVIOUR_HORIZONS: dict[str, float] = {
+    # upright on two in-line wheels, an unstable equilibrium: the same scooter with its wheels' axes
+    # along local z parts from the ground truth by round-off alone at 0.73-0.98 of the 2 s at 7 of
+    # 10 seeds (``--alternatives 10``); compared over the first half, where it stays within 1e-3
+    "non_steerable_scooter_with_ideal_rolling": 0.5,
+}
 
 
 def tolerance_for(slug: str) -> BehaviourTolerance:
