@@ -28,6 +28,8 @@ from meceng.eval.bodies import BodyMotion, Scales, match_bodies, read_bodies, sc
 DEGENERATE = 1e-6
 #: A flexible body's interface points are compared within this many ``relative`` of their travel.
 DEFORMATION = 10.0
+#: A tolerance is at least this many times the ground truth's own step error (``_step_allowances``).
+STEP_MARGIN = 3.0
 
 
 @dataclass(frozen=True)
@@ -82,6 +84,7 @@ class BehaviourVerdict:
     relative: float = 0.0
     compared_until: float | None = None
     deviations: tuple[Deviation, ...] = field(default_factory=tuple)
+    widened: tuple[str, ...] = ()  # the tolerances the ground truth's own step error widened
 
     def to_json(self) -> dict[str, Any]:
         return {"passed": self.passed, "detail": self.detail,
@@ -89,7 +92,7 @@ class BehaviourVerdict:
                 "largest": self.largest.to_json() if self.largest else None,
                 "first_divergence": self.first_divergence.to_json() if self.first_divergence else None,
                 "scales": self.scales.to_json() if self.scales else None, "relative": self.relative,
-                "compared_until": _round(self.compared_until)}
+                "compared_until": _round(self.compared_until), "widened_by_step_error": list(self.widened)}
 
 
 def _round(value: float | None) -> float | None:
@@ -158,9 +161,28 @@ def _point_deviation(candidate: BodyMotion, truth: BodyMotion, n: int, near: flo
     return worst
 
 
+def _step_allowances(refined: dict[str, Any] | None, truths: list[BodyMotion], n: int, scale: Scales,
+                     relative: float) -> dict[tuple[int, str], float]:
+    """What the ground truth's own time stepping moves each of its quantities by (the same program
+    with ``REFINE`` times the steps, matched by object number), times ``STEP_MARGIN``: a program built
+    another way has a step error of its own, of that size."""
+    finer = {b.index: b for b in read_bodies(refined) or []}
+    out: dict[tuple[int, str], float] = {}
+    for truth in truths:
+        other = finer.get(truth.index)
+        if other is None or len(other.t) < n:
+            continue
+        for quantity, values, _ in _pair_errors(other, truth, n, scale, relative):
+            if np.all(np.isfinite(values)):
+                out[(truth.index, quantity)] = STEP_MARGIN * float(np.max(values))
+    return out
+
+
 def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dict[str, Any] | None,
-                      tolerance: BehaviourTolerance | None = None) -> BehaviourVerdict:
-    """The behaviour verdict of a candidate's motion record against the ground truth's."""
+                      tolerance: BehaviourTolerance | None = None, refined: dict[str, Any] | None = None
+                      ) -> BehaviourVerdict:
+    """The behaviour verdict of a candidate's motion record against the ground truth's; ``refined``:
+    the ground truth's record with more steps, whose difference widens a tolerance it exceeds."""
     tol = tolerance or BehaviourTolerance()
     truths = read_bodies(truth_motion)
     if truths is None:
@@ -190,9 +212,11 @@ def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dic
                                 compared_until=limit, **common)
     deviations: list[Deviation] = []
     first: Deviation | None = None
+    allowances = _step_allowances(refined, truths, n, scale, tol.relative)
     for c, g in pairs:
         cand, truth = candidates[c], truths[g]
         for quantity, values, allowed in _pair_errors(cand, truth, n, scale, tol.relative):
+            allowed = max(allowed, allowances.get((truth.index, quantity), 0.0))
             bad = ~np.isfinite(values)
             values = np.where(bad, np.inf, values)
             k = int(np.argmax(values))
@@ -211,5 +235,7 @@ def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dic
         assert first is not None
         detail = (f"motions part at t = {first.time:.4g} s: {first.quantity} of body {first.body} (candidate's "
                   f"{first.candidate_body}) off by {first.value:.3g} > {first.tolerance:.3g}")
+    widened = sorted({f"{q} of body {b}" for (b, q), v in allowances.items()
+                      if any(d.body == b and d.quantity == q and d.tolerance == v for d in deviations)})
     return BehaviourVerdict(passed, detail, largest=largest, first_divergence=first, compared_until=limit,
-                            deviations=tuple(deviations), **common)
+                            deviations=tuple(deviations), widened=tuple(widened), **common)

@@ -104,11 +104,13 @@ def evaluate_rigid(
     dependencies: Mapping[str, Iterable[str]],
     tolerances: Tolerances | None = None,
     behaviour: BehaviourTolerance | None = None,
+    refined: dict[str, Any] | None = None,
 ) -> Verdict:
     """Grade a candidate execution against the reference execution of the same task instance.
 
     ``selected`` None means no component selection took place (grading a program directly);
     that stage is then recorded as not applicable and does not count against overall.
+    ``refined``: the ground truth's motion with more steps (its own step error, for behaviour).
     """
     tol = tolerances or Tolerances()
     if not reference.solved or reference.items is None or reference.trajectory is None:
@@ -127,7 +129,7 @@ def evaluate_rigid(
         reason = candidate.error or f"stopped at stage '{candidate.stage}'"
         stages.append(StageResult("finished_assemble", False, reason))
         stages += [StageResult(n, None, "not evaluated: assemble did not finish") for n in RIGID_STAGES[2:]]
-        return Verdict(tuple(stages), behaviour=_behaviour(candidate, reference, behaviour))
+        return Verdict(tuple(stages), behaviour=_behaviour(candidate, reference, behaviour, refined))
     stages.append(StageResult("finished_assemble", True, "mbs.Assemble() finished"))
 
     graph = compare_graphs(candidate.items, reference.items, tol.graph)
@@ -151,11 +153,12 @@ def evaluate_rigid(
         stages.append(StageResult("solution_match", None, "not evaluated: solver failed"))
     return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm,
                    topology_causes=graph.topology.to_json() if graph.topology else None,
-                   behaviour=_behaviour(candidate, reference, behaviour))
+                   behaviour=_behaviour(candidate, reference, behaviour, refined))
 
 
-def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourTolerance | None) -> dict[str, Any]:
-    return compare_behaviour(candidate.motion, reference.motion, tolerance).to_json()
+def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourTolerance | None,
+               refined: dict[str, Any] | None) -> dict[str, Any]:
+    return compare_behaviour(candidate.motion, reference.motion, tolerance, refined).to_json()
 
 
 def _not_applicable(stage: StageResult) -> bool:

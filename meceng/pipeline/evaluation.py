@@ -35,6 +35,8 @@ from .store import ReferenceStore, reference_key
 #: Samples of the bodies' motion per execution (fewer when a system has many bodies:
 #: ``tools/inspection.MOTION_BUDGET``).
 MOTION_SAMPLES = 201
+#: The ground truth's own time-stepping error is measured against a run with this many times the steps.
+REFINE = 2
 
 
 class ReferenceCache:
@@ -67,6 +69,11 @@ def _cancel(task: asyncio.Task[Execution] | None) -> None:
         task.cancel()
 
 
+def refined(instance: TaskInstance) -> TaskInstance:
+    """The instance simulated with twice the steps (the behaviour verdict's step-error run)."""
+    return replace(instance, sim=replace(instance.sim, steps=REFINE * instance.sim.steps))
+
+
 def not_run(code_error: str | None) -> Execution:
     """The candidate 'execution' of an answer that had no program to run."""
     return Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
@@ -90,6 +97,9 @@ class Evaluator:
         self.assembly_catalog = assembly_catalog()
         self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
         self.references = ReferenceCache(self._run_reference)
+        # the ground truth again with twice the steps: its own time-stepping error, which the behaviour
+        # verdict allows a program built another way (levels 1-2 and 3b)
+        self.refined = ReferenceCache(self._run_refined)
         self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
 
     def catalog_for(self, instance: TaskInstance) -> Catalog:
@@ -101,6 +111,7 @@ class Evaluator:
     def release(self, instance: TaskInstance) -> None:
         """The task is graded: its ground-truth executions are not needed again in this run."""
         self.references.discard(instance.key)
+        self.refined.discard(instance.key)
         for key in [k for k in self._remeshed if k[0] == instance.key]:
             _cancel(self._remeshed.pop(key))
 
@@ -108,6 +119,8 @@ class Evaluator:
         """Start the reference execution now, while the LLM is still busy with this task."""
         if instance.kind != "assembly":  # an assembly's reference needs the parts the LLM makes first
             self.references.start(instance)
+            if instance.kind == "rigid":
+                self.refined.start(instance)
 
     def graded_limits(self, instance: TaskInstance) -> ExecutionLimits:
         """The limits a graded level 1-2/3b program runs under: the states at t = 0 and at the end
@@ -127,6 +140,9 @@ class Evaluator:
         limits = replace(self.part_limits, n_modes=instance.part.n_modes,
                          save_fem_to=str(save_to) if save_to is not None else None)
         return await execute(program, "", limits, check=check, pool=self.pool, slots=self.slots)
+
+    async def _run_refined(self, instance: TaskInstance) -> Execution:
+        return await self._ground_truth(refined(instance), instance.reference_program)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self._ground_truth(instance, instance.reference_program)
@@ -165,17 +181,21 @@ class Evaluator:
         if files:
             reference_task = asyncio.ensure_future(
                 self.execute(instance.reference_program, instance, check=False, files=files))
+            refined_task = asyncio.ensure_future(
+                self.execute(instance.reference_program, refined(instance), check=False, files=files))
         else:
             reference_task = asyncio.ensure_future(self.references.get(instance))
+            refined_task = asyncio.ensure_future(self.refined.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
+        finer = await refined_task
         # off the event loop and off this process: graph isomorphism and trajectory resampling take
         # ~10 ms a task, during which no LLM answer would be read, and they scale with the cores
         verdict = await offload(
             self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
             steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
-            behaviour=tolerance_for(instance.slug),
+            behaviour=tolerance_for(instance.slug), refined=finer.motion,
         )
         return verdict, candidate, reference
 
