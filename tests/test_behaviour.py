@@ -248,3 +248,27 @@ async def test_assembly_gold_and_its_alternatives_pass_behaviour(slug: str, tmp_
     verdicts = await _assembly_verdicts(slug, programs, tmp_path)
     assert verdicts[0].overall, verdicts[0].first_failure
     assert all(v.behaviour["passed"] for v in verdicts), [v.behaviour for v in verdicts]
+
+
+def test_the_viewer_shows_the_matched_bodies_and_where_the_motions_part(tmp_path) -> None:
+    from test_viewer import _record, _run_folder, _trajectory
+
+    from meceng.pipeline.traces import save_traces
+    from meceng.tools.execution import Execution
+    from meceng.viewer.site import build_site
+
+    parted = {"body": 1, "candidate_body": 2, "quantity": "position", "value": 0.02, "tolerance": 0.001,
+              "ratio": 20.0, "time": 0.75}
+    behaviour = {"passed": False, "detail": "motions part at t = 0.75 s", "matching": [{"candidate": 2, "truth": 1}],
+                 "largest": parted, "first_divergence": parted, "scales": {"length_m": 1.0}, "relative": 0.001,
+                 "compared_until": 2.0, "widened_by_step_error": []}
+    run = _run_folder(tmp_path / "runs" / "m", [_record("single_pendulum", 1, failure="solution_match",
+                                                        behaviour=behaviour)])
+    t, q = _trajectory(300, 4)
+    save_traces(run, "single_pendulum@1", Execution("solved", times=t, trajectory=q + 0.1),
+                Execution("solved", times=t, trajectory=q))
+    build_site([tmp_path / "runs"], tmp_path / "site", workers=1)
+    page = (tmp_path / "site" / "tasks" / "r0" / "single_pendulum-1.html").read_text()
+    section = page.split("id='behaviour'")[1].split("<h2")[0]
+    assert "program #2 ↔ ground truth #1" in section and "at t = 0.75 s" in section and "fails" in section
+    assert "Other fields" not in page or "behaviour" not in page.split("Other fields")[1]
