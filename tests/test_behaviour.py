@@ -145,27 +145,34 @@ def test_the_alternatives_cover_the_issue_s_kinds_and_levels() -> None:
     assert levels == {"1", "2", "3b"} and len({a.slug for a in ALTERNATIVES}) >= 10
 
 
-def _same_motion(candidate, reference) -> bool:
+def _coordinate_change(candidate, reference) -> float | None:
     """Independent of the behaviour comparison: a draft keeps the ground truth's coordinates, so
-    its trajectory, resampled, tells whether anything moves otherwise."""
+    its trajectory, resampled, tells how far anything moves otherwise (None: not comparable)."""
     if not candidate.solved or candidate.trajectory is None or candidate.trajectory.shape[1] != \
             reference.trajectory.shape[1]:
-        return False
+        return None
     grid = np.linspace(0.0, float(reference.times[-1]), 401)
     difference = resample(candidate.times, candidate.trajectory, grid) - \
         resample(reference.times, reference.trajectory, grid)
-    spread = float(np.max(np.ptp(reference.trajectory, axis=0))) or 1.0
-    return float(np.max(np.abs(difference))) < 1e-6 * spread
+    return float(np.max(np.abs(difference)))
 
 
 @pytest.mark.parametrize("slug", [m.slug for m in default_registry().select(["1", "2"])])
 async def test_every_draft_that_moves_otherwise_fails_behaviour(slug: str) -> None:
+    """A draft behaviour passes either moves as the ground truth (its coordinates within 1e-6 of their
+    range) or differs by no more than the ground truth's own step error (3x what twice the steps
+    change), which no comparison at the paper's step count can tell from a fault."""
     instance = default_registry().get(slug).instance(0)
     evaluator = Evaluator(2, ExecutionLimits(), Tolerances())
+    finer = await evaluator.refined.get(instance)
     for draft in candidate_drafts(instance):
         verdict, candidate, reference = await evaluator.evaluate(instance, draft.program, None, None)
         if verdict.behaviour["passed"]:
-            assert _same_motion(candidate, reference), (draft.id, verdict.behaviour)
+            change = _coordinate_change(candidate, reference)
+            spread = float(np.max(np.ptp(reference.trajectory, axis=0))) or 1.0
+            step_error = _coordinate_change(finer, reference)
+            assert change is not None and (change < 1e-6 * spread or change <= 3 * step_error), \
+                (draft.id, change, step_error, verdict.behaviour)
 
 
 def test_meceng_evaluate_prints_behaviour_beside_the_paper_s_verdict(tmp_path) -> None:

@@ -7,9 +7,12 @@ principal axes up to the body's symmetry (an axis whose moment equals another's 
 Item types, creation order, reference points and local axes do not enter.
 
 Every tolerance is a fraction ``relative`` of the ground truth's own scales (``Scales``): positions
-within ``relative`` x the system's size, velocities within ``relative`` x its range of speeds, a
-body's angular velocity and axes within what moves a point at the body's inertia radius by as
-much. Sensitive systems (an unstable equilibrium, chaotic or impacting motion) get a horizon per
+within ``relative`` x the motion's range (the farthest a centre of mass travels, at least 1 % of the
+system's size), velocities within ``relative`` x its range of speeds, a body's angular velocity and
+axes within what moves a point at the body's inertia radius by ``relative`` x its speeds and size,
+a flexible body's interface points within 10 x ``relative`` of their travel; and never less than 3 x
+what the ground truth's own time stepping moves a quantity by (the same program with twice the
+steps). Sensitive systems (an unstable equilibrium, chaotic or impacting motion) get a horizon per
 task model: the motion is compared up to the time two correct formulations of the ground truth
 stay within the tolerance (``BEHAVIOUR_HORIZONS``, measured by ``scripts/behaviour_sensitivity.py``).
 """
@@ -126,7 +129,7 @@ def _pair_errors(candidate: BodyMotion, truth: BodyMotion, n: int, scale: Scales
     """(quantity, deviation per sample, tolerance) of one matched pair over the first n samples."""
     shift = (candidate.t[:n] - truth.t[:n])[:, None]  # adaptive steps land beside the grid: first order back
     position = candidate.p[:n] - candidate.v[:n] * shift
-    out = [("position", np.linalg.norm(position - truth.p[:n], axis=1), relative * scale.length),
+    out = [("position", np.linalg.norm(position - truth.p[:n], axis=1), relative * scale.travel),
            ("velocity", np.linalg.norm(candidate.v[:n] - truth.v[:n], axis=1), relative * scale.speed)]
     size = max(truth.size, candidate.size)
     if truth.w is not None and size > 1e-3 * scale.length:

@@ -17,6 +17,8 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 _E = np.eye(3)
+#: The motion's range is taken as at least this fraction of the system's size.
+TRAVEL_FLOOR = 1e-2
 
 
 @dataclass(frozen=True)
@@ -103,9 +105,13 @@ class Scales:
     length: float  # the system's size: the box around every centre of mass over the whole run, or the largest body
     speed: float  # the range of velocities: centres of mass and the bodies' rim speeds (|w| times size)
     duration: float
+    # the motion's range: the farthest one centre of mass travels (the box around its path), at least
+    # TRAVEL_FLOOR of the size (a truss deflects millimetres in metres; a disc spins in place)
+    travel: float = 0.0
 
     def to_json(self) -> dict[str, float]:
-        return {"length_m": self.length, "speed_m_s": self.speed, "duration_s": self.duration}
+        return {"length_m": self.length, "travel_m": self.travel, "speed_m_s": self.speed,
+                "duration_s": self.duration}
 
 
 def scales(bodies: list[BodyMotion]) -> Scales:
@@ -115,12 +121,14 @@ def scales(bodies: list[BodyMotion]) -> Scales:
     velocities = np.concatenate([b.v for b in bodies])
     size = max(b.size for b in bodies)
     length = max(float(np.linalg.norm(np.ptp(positions, axis=0))) if len(positions) else 0.0, size, 1e-6)
+    travel = max(max(float(np.linalg.norm(np.ptp(b.p, axis=0))) if len(b.p) else 0.0 for b in bodies),
+                 TRAVEL_FLOOR * length)
     duration = float(bodies[0].t[-1] - bodies[0].t[0]) if len(bodies[0].t) > 1 else 1.0
     rim = max((float(np.max(np.linalg.norm(b.w, axis=1))) * b.size for b in bodies if b.w is not None and len(b.w)),
               default=0.0)
     swept = float(np.linalg.norm(np.ptp(velocities, axis=0))) if len(velocities) else 0.0
-    speed = max(swept, rim, length / max(duration, 1e-9))
-    return Scales(length, speed, max(duration, 1e-9))
+    speed = max(swept, rim, travel / max(duration, 1e-9))
+    return Scales(length, speed, max(duration, 1e-9), travel)
 
 
 def _common(a: BodyMotion, b: BodyMotion) -> int:
