@@ -23,6 +23,7 @@ from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.report import (
     FLEXIBLE_COLUMNS,
     RIGID_COLUMNS,
+    behaviour_table,
     component_series,
     difficulty,
     error_category_table,
@@ -209,6 +210,15 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                      for r in causes])
     sections.append(("Topology failures by cause (beside Table 5; levels 1, 2 and 3b)", md, ht, None))
 
+    behaviour, differ = behaviour_table(runs)
+    md, ht = _table(["run", "n", "paper overall", "behaviour", "paper only", "behaviour only"],
+                    [[r["run"], str(r["n"]), r["paper"].text(), r["behaviour"].text(), str(r["paper_only"]),
+                      str(r["behaviour_only"])] for r in behaviour])
+    sections.append(("Behaviour beside the paper's verdict (levels 1, 2 and 3b)", md, ht, None))
+    md, ht = _table(["run", "task", "level", "paper", "behaviour"],
+                    [[d["run"], d["task"], d["level"], d["paper"], d["behaviour"]] for d in differ[:200]])
+    sections.append(("Where the two verdicts differ", md, ht, None))
+
     temperature = series(runs, "temperature")
     if any(len(v) > 1 for v in temperature.values()):
         _line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
@@ -323,6 +333,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                     **{k: r[k].to_json() for k, _ in RIGID_COLUMNS}} for r in stages],
         "error_categories": categories,
         "topology_causes": causes,
+        "behaviour_disagreements": differ,
         "tokens": tokens,
         "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
                        for r in hard],

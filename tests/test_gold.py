@@ -34,6 +34,8 @@ def test_gold_sweep_scores_everything(tmp_path: Path) -> None:
                 for t in run["tasks"] if not t["overall"]]
     assert failures == []
     assert run["summary"]["rates"]["overall"] == 1.0
+    assert [t["slug"] for t in run["tasks"] if not t["behaviour"]["passed"]] == []  # behaviour: gold 100 % too
+    assert run["summary"]["behaviour"]["rate"] == 1.0
     assert set(run) >= {"settings", "versions", "summary", "tasks"}
     record = run["tasks"][0]
     assert set(record) >= {"slug", "level", "seed", "params", "stages", "overall", "first_failure",
@@ -77,6 +79,7 @@ def test_gold_level3_sweep_scores_every_part_and_assembly(tmp_path: Path) -> Non
                 for t in run["tasks"] if not t["overall"]]
     assert failures == []
     assemblies = [t for t in run["tasks"] if t["level"] == "3b"]
+    assert all(t["behaviour"]["passed"] for t in assemblies)
     standalone = [t for t in run["tasks"] if t["level"] == "3a" and not t.get("origin")]
     assert len(assemblies) == 12 and len(standalone) == 22
     assert all(t["files"].get("part") for t in run["tasks"] if t["level"] == "3a")

@@ -90,6 +90,8 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
     # tamper with a saved program's record: the rescore must grade the code it finds
     record = run["tasks"][0]
     record["generation"]["code"] = record["generation"]["code"].replace("mbs.Assemble()", "raise ValueError('x')")
+    for task in run["tasks"]:  # a run made before the behaviour verdict: rescore adds it
+        task.pop("behaviour", None)
     run_json.write_text(json.dumps(run))
     proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r")],
                           capture_output=True, text=True, timeout=300)
@@ -97,6 +99,8 @@ def test_rescore_regrades_saved_programs_without_llm(tmp_path: Path) -> None:
     after = json.loads(run_json.read_text())
     assert after["tasks"][0]["overall"] is False and after["tasks"][0]["first_failure"] == "finished_assemble"
     assert after["tasks"][1]["overall"] is True
+    assert [t["behaviour"]["passed"] for t in after["tasks"]] == [False, True]
+    assert after["summary"]["behaviour"]["graded"] == 2
     assert all(t["evaluator"] for t in after["tasks"]) and "rescored" in after
     assert (tmp_path / "r" / "responses.jsonl").read_text().count("\n") == 4  # no new LLM call
     assert (tmp_path / "r" / "run.previous.json").exists()
@@ -124,7 +128,8 @@ def test_rescore_options_give_the_same_verdicts_and_fill_the_store(tmp_path: Pat
         verdicts.append([(t["slug"], t["overall"], t["first_failure"]) for t in tasks])
     assert verdicts[0] == verdicts[1] == verdicts[2]
     assert verdicts[0][0][1] is False and verdicts[0][1][1] is True
-    assert len(list(store.glob("*/*.pkl"))) == 2  # one ground truth per task, made once
+    # per task one ground truth and its run with twice the steps (the behaviour verdict's), made once
+    assert len(list(store.glob("*/*.pkl"))) == 4
     proc = subprocess.run([sys.executable, "-m", "meceng.cli", "rescore", str(tmp_path / "r"), "--executor", "cold"],
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2 and "--executor" in proc.stderr

@@ -105,6 +105,9 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
             print("error categories: " + ", ".join(verdict.error_categories))
         if verdict.infrastructure_error:
             print(f"infrastructure error: {verdict.infrastructure_error}")
+        if verdict.behaviour is not None:  # beside the paper's verdict; the exit status stays the paper's
+            mark = {True: "pass", False: "FAIL", None: " -- "}[verdict.behaviour["passed"]]
+            print(f"behaviour: [{mark}] {verdict.behaviour['detail']}")
     return 0 if verdict.overall else 1
 
 

@@ -87,6 +87,28 @@ def repair_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
             "grader_agrees_with_label": sum(1 for r in drafts if (r["repair"].get("graded") or {}).get("agrees"))}
 
 
+def behaviour_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """The behaviour verdict beside the paper's: its rate (overall and per level) over the graded
+    records that carry one, how often the two verdicts agree, and the records where they differ."""
+    graded = [r for r in records if isinstance(r.get("behaviour"), dict) and r.get("first_failure") != "infrastructure"
+              and r["behaviour"].get("passed") is not None]
+    if not graded:
+        return None
+    pairs = Counter((bool(r.get("overall")), bool(r["behaviour"]["passed"])) for r in graded)
+    by_level: dict[str, list[bool]] = defaultdict(list)
+    for r in graded:
+        by_level[str(r["level"])].append(bool(r["behaviour"]["passed"]))
+    differ = [r for r in graded if bool(r.get("overall")) != bool(r["behaviour"]["passed"])]
+    return {"graded": len(graded), "passed": pairs[(True, True)] + pairs[(False, True)],
+            "rate": (pairs[(True, True)] + pairs[(False, True)]) / len(graded),
+            "levels": {level: sum(v) / len(v) for level, v in sorted(by_level.items())},
+            "both_pass": pairs[(True, True)], "both_fail": pairs[(False, False)],
+            "paper_only": pairs[(True, False)], "behaviour_only": pairs[(False, True)],
+            "disagreements": [{"slug": r["slug"], "seed": r.get("seed"), "paper": bool(r.get("overall")),
+                               "first_failure": r.get("first_failure"), "behaviour": r["behaviour"].get("detail", "")}
+                              for r in differ[:100]]}
+
+
 def token_totals(records: Iterable[dict[str, Any]]) -> dict[str, int]:
     """Prompt, completion and reasoning tokens of all the records' LLM calls (reasoning is part of
     completion, as the APIs bill it)."""
@@ -131,6 +153,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
         },
         "agent": agent_summary(records),
         "repair": repair_summary(records),
+        "behaviour": behaviour_summary(records),
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

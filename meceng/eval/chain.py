@@ -12,6 +12,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from meceng.eval.behaviour import BehaviourTolerance, compare_behaviour
 from meceng.eval.components import check_components
 from meceng.eval.graph import GraphTolerance, compare_graphs
 from meceng.eval.solution import compare_solutions
@@ -47,6 +48,9 @@ class Verdict:
     solution_norm: float | None = None
     infrastructure_error: str | None = None
     topology_causes: dict[str, Any] | None = None  # why topology_match failed (eval.topology)
+    # does the program's system move as the ground truth's (eval.behaviour)? Beside the paper's
+    # verdict: it changes neither ``overall`` nor any stage. None: not graded for behaviour (3a).
+    behaviour: dict[str, Any] | None = None
 
     @property
     def overall(self) -> bool:
@@ -79,6 +83,7 @@ class Verdict:
             "solution_norm": self.solution_norm,
             "infrastructure_error": self.infrastructure_error,
             "topology_causes": self.topology_causes,
+            **({"behaviour": self.behaviour} if self.behaviour is not None else {}),
         }
 
 
@@ -98,11 +103,14 @@ def evaluate_rigid(
     required: Iterable[str],
     dependencies: Mapping[str, Iterable[str]],
     tolerances: Tolerances | None = None,
+    behaviour: BehaviourTolerance | None = None,
+    refined: dict[str, Any] | None = None,
 ) -> Verdict:
     """Grade a candidate execution against the reference execution of the same task instance.
 
     ``selected`` None means no component selection took place (grading a program directly);
     that stage is then recorded as not applicable and does not count against overall.
+    ``refined``: the ground truth's motion with more steps (its own step error, for behaviour).
     """
     tol = tolerances or Tolerances()
     if not reference.solved or reference.items is None or reference.trajectory is None:
@@ -121,7 +129,7 @@ def evaluate_rigid(
         reason = candidate.error or f"stopped at stage '{candidate.stage}'"
         stages.append(StageResult("finished_assemble", False, reason))
         stages += [StageResult(n, None, "not evaluated: assemble did not finish") for n in RIGID_STAGES[2:]]
-        return Verdict(tuple(stages))
+        return Verdict(tuple(stages), behaviour=_behaviour(candidate, reference, behaviour, refined))
     stages.append(StageResult("finished_assemble", True, "mbs.Assemble() finished"))
 
     graph = compare_graphs(candidate.items, reference.items, tol.graph)
@@ -144,7 +152,13 @@ def evaluate_rigid(
         stages.append(StageResult("solver_success", False, candidate.error or f"stage '{candidate.stage}'"))
         stages.append(StageResult("solution_match", None, "not evaluated: solver failed"))
     return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm,
-                   topology_causes=graph.topology.to_json() if graph.topology else None)
+                   topology_causes=graph.topology.to_json() if graph.topology else None,
+                   behaviour=_behaviour(candidate, reference, behaviour, refined))
+
+
+def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourTolerance | None,
+               refined: dict[str, Any] | None) -> dict[str, Any]:
+    return compare_behaviour(candidate.motion, reference.motion, tolerance, refined).to_json()
 
 
 def _not_applicable(stage: StageResult) -> bool:

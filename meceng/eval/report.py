@@ -236,3 +236,25 @@ def difficulty(runs: list[Run]) -> list[dict[str, Any]]:
         rows.append({"slug": slug, "level": tasks[0]["level"], "id": tasks[0].get("id"), "n": len(tasks),
                      "overall": rate, "difficulty": 1 - (rate.value or 0.0)})
     return sorted(rows, key=lambda r: (-r["difficulty"], r["id"] or 0))
+
+
+def behaviour_table(runs: list[Run]) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
+    """The behaviour verdict beside the paper's, per run over levels 1, 2 and 3b: both rates and how
+    the two verdicts split; and every record where they differ (run, task, both verdicts)."""
+    rows, disagreements = [], []
+    labels = [run.label for run in runs]
+    for run in runs:
+        tasks = [t for t in run.graded(GRAPH_LEVELS) if isinstance(t.get("behaviour"), dict)
+                 and t["behaviour"].get("passed") is not None]
+        if not tasks:
+            continue
+        label = _label(run, labels)
+        split = Counter((bool(t.get("overall")), bool(t["behaviour"]["passed"])) for t in tasks)
+        rows.append({"run": label, "model": run.model, "n": len(tasks), "paper": stage_rate(tasks, "overall"),
+                     "behaviour": Rate(split[(True, True)] + split[(False, True)], len(tasks)),
+                     "paper_only": split[(True, False)], "behaviour_only": split[(False, True)]})
+        disagreements += [{"run": label, "task": f"{t['slug']}@{t.get('seed')}", "level": str(t.get("level")),
+                           "paper": "pass" if t.get("overall") else f"fail ({t.get('first_failure')})",
+                           "behaviour": t["behaviour"].get("detail", "")}
+                          for t in tasks if bool(t.get("overall")) != bool(t["behaviour"]["passed"])]
+    return sorted(rows, key=lambda r: -(r["behaviour"].value or 0.0)), disagreements

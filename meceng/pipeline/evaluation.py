@@ -20,6 +20,7 @@ import numpy as np
 
 from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
 from meceng.catalog.component import Catalog
+from meceng.eval.behaviour import tolerance_for
 from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
 from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
@@ -30,6 +31,12 @@ from meceng.tools.warm import WarmPool
 
 from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
+
+#: Samples of the bodies' motion per execution (fewer when a system has many bodies:
+#: ``tools/inspection.MOTION_BUDGET``).
+MOTION_SAMPLES = 201
+#: The ground truth's own time-stepping error is measured against a run with this many times the steps.
+REFINE = 2
 
 
 class ReferenceCache:
@@ -62,6 +69,11 @@ def _cancel(task: asyncio.Task[Execution] | None) -> None:
         task.cancel()
 
 
+def refined(instance: TaskInstance) -> TaskInstance:
+    """The instance simulated with twice the steps (the behaviour verdict's step-error run)."""
+    return replace(instance, sim=replace(instance.sim, steps=REFINE * instance.sim.steps))
+
+
 def not_run(code_error: str | None) -> Execution:
     """The candidate 'execution' of an answer that had no program to run."""
     return Execution(stage="no_code", error=code_error or "no program", error_kind="no_code")
@@ -85,6 +97,9 @@ class Evaluator:
         self.assembly_catalog = assembly_catalog()
         self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
         self.references = ReferenceCache(self._run_reference)
+        # the ground truth again with twice the steps: its own time-stepping error, which the behaviour
+        # verdict allows a program built another way (levels 1-2 and 3b)
+        self.refined = ReferenceCache(self._run_refined)
         self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
 
     def catalog_for(self, instance: TaskInstance) -> Catalog:
@@ -96,6 +111,7 @@ class Evaluator:
     def release(self, instance: TaskInstance) -> None:
         """The task is graded: its ground-truth executions are not needed again in this run."""
         self.references.discard(instance.key)
+        self.refined.discard(instance.key)
         for key in [k for k in self._remeshed if k[0] == instance.key]:
             _cancel(self._remeshed.pop(key))
 
@@ -103,12 +119,19 @@ class Evaluator:
         """Start the reference execution now, while the LLM is still busy with this task."""
         if instance.kind != "assembly":  # an assembly's reference needs the parts the LLM makes first
             self.references.start(instance)
+            if instance.kind == "rigid":
+                self.refined.start(instance)
+
+    def graded_limits(self, instance: TaskInstance) -> ExecutionLimits:
+        """The limits a graded level 1-2/3b program runs under: the states at t = 0 and at the end
+        (the viewer's pictures of the system) and every body's motion on a grid (the behaviour
+        verdict); reading them does not touch the solution."""
+        return replace(self.limits, inspect_times=(instance.sim.end_time,),
+                       motion_grid=(instance.sim.end_time, MOTION_SAMPLES))
 
     async def execute(self, program: str, instance: TaskInstance, check: bool,
                       files: dict[str, Path] | None = None) -> Execution:
-        # the states at t = 0 and at the end: the viewer's pictures of the system (reading them does not
-        # touch the solution)
-        limits = replace(self.limits, inspect_times=(instance.sim.end_time,))
+        limits = self.graded_limits(instance)
         return await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files,
                              slots=self.slots)
 
@@ -117,6 +140,9 @@ class Evaluator:
         limits = replace(self.part_limits, n_modes=instance.part.n_modes,
                          save_fem_to=str(save_to) if save_to is not None else None)
         return await execute(program, "", limits, check=check, pool=self.pool, slots=self.slots)
+
+    async def _run_refined(self, instance: TaskInstance) -> Execution:
+        return await self._ground_truth(refined(instance), instance.reference_program)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self._ground_truth(instance, instance.reference_program)
@@ -131,7 +157,10 @@ class Evaluator:
 
         if self.store is None:
             return await run()
-        limits = replace(self.part_limits, n_modes=instance.part.n_modes) if instance.kind == "part" else self.limits
+        if instance.kind == "part":
+            limits = replace(self.part_limits, n_modes=instance.part.n_modes)
+        else:
+            limits = self.graded_limits(instance)
         sim = "" if instance.kind == "part" else instance.sim.block()
         return await self.store.fetch(reference_key(program, sim, limits), run)
 
@@ -152,16 +181,21 @@ class Evaluator:
         if files:
             reference_task = asyncio.ensure_future(
                 self.execute(instance.reference_program, instance, check=False, files=files))
+            refined_task = asyncio.ensure_future(
+                self.execute(instance.reference_program, refined(instance), check=False, files=files))
         else:
             reference_task = asyncio.ensure_future(self.references.get(instance))
+            refined_task = asyncio.ensure_future(self.refined.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
+        finer = await refined_task
         # off the event loop and off this process: graph isomorphism and trajectory resampling take
         # ~10 ms a task, during which no LLM answer would be read, and they scale with the cores
         verdict = await offload(
             self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
             steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
+            behaviour=tolerance_for(instance.slug), refined=finer.motion,
         )
         return verdict, candidate, reference
 

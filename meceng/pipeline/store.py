@@ -61,7 +61,7 @@ def stack_fingerprint() -> str:
 def reference_key(program: str, sim_block: str, limits: ExecutionLimits) -> str:
     """The digest a ground-truth execution is stored under."""
     shape = {k: v for k, v in asdict(limits).items()
-             if k in ("mode", "n_modes", "guard", "inspect_times", "inspect_loads")}
+             if k in ("mode", "n_modes", "guard", "inspect_times", "inspect_loads", "motion_grid")}
     text = json.dumps({"format": FORMAT, "program": program, "sim": sim_block, "limits": shape,
                        "stack": stack_fingerprint()}, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()

@@ -29,6 +29,8 @@ class ExecutionLimits:
     # the agent's tools only; a graded run never calls a program's function outside its solver (a
     # function that keeps state would then move differently)
     inspect_loads: bool = False
+    # the behaviour comparison: every body's motion on a grid of (end time, samples) (None: not recorded)
+    motion_grid: tuple[float, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -60,6 +62,9 @@ class Execution:
     wall_time: float = 0.0
     solve_time: float | None = None
     inspection: dict[str, Any] | None = None  # the model inspector's states (ExecutionLimits.inspect_times)
+    # the bodies' motion (ExecutionLimits.motion_grid): "bodies" (index, type, mass, inertia, com),
+    # "t" (n,) and "states" (n, bodies, 18: centre of mass, velocity, angular velocity, rotation)
+    motion: dict[str, Any] | None = None
 
     @property
     def finished_assemble(self) -> bool:

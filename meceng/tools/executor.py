@@ -167,7 +167,9 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
                                "mode": limits.mode, "n_modes": limits.n_modes,
                                "save_fem": limits.save_fem_to is not None,
                                "inspect_times": None if limits.inspect_times is None else list(limits.inspect_times),
-                               "inspect_loads": limits.inspect_loads}))
+                               "inspect_loads": limits.inspect_loads,
+                               "motion": None if limits.motion_grid is None else
+                               {"end": limits.motion_grid[0], "samples": limits.motion_grid[1]}}))
     (scratch / "program.py").write_text(program)
     return job, token
 
@@ -248,6 +250,11 @@ def _collect(
             surface = (data["vertices"], data["triangles"])
             if "fine_vertices" in data:
                 fine_surface = (data["fine_vertices"], data["fine_triangles"])
+    motion = result.get("motion")
+    motion_path = scratch / f"motion-{token}.npz"
+    if isinstance(motion, dict) and motion_path.exists():
+        with parsing(), np.load(motion_path) as data:
+            motion = {**motion, **{key: data[key] for key in data.files}}
     fem_file = None
     fem_path = scratch / f"fem-{token}.npz"
     if limits.save_fem_to and fem_path.exists():
@@ -272,5 +279,6 @@ def _collect(
         warnings=tuple(result.get("warnings", ())),
         solve_time=result.get("solve_time"),
         inspection=result.get("inspection"),
+        motion=motion if isinstance(motion, dict) and "states" in motion else None,
         **common,
     )

@@ -30,6 +30,7 @@ class Harness:
         self.warnings: list[str] = []
         self.rows: list[tuple[float, Any]] = []
         self.inspector: Any = None  # an InspectionRecorder when the job asks for the model inspector
+        self.motion: Any = None  # a MotionRecorder when the job asks for the bodies' motion (behaviour)
         self.mark("started")
 
     def mark(self, stage: str) -> None:
@@ -115,11 +116,14 @@ class Harness:
         get_total = self.api["GetODE2CoordinatesTotal"]
 
         inspector = self.inspector
+        motion = self.motion
 
         def record(system: Any, t: float) -> bool:
             self.rows.append((t, np.array(get_total(system.systemData))))
             if inspector is not None:
                 inspector.after_step(t)
+            if motion is not None:
+                motion.after_step(t)
             if user_post is not None:
                 return bool(user_post(system, t))
             return True

@@ -93,6 +93,8 @@ def run(job_path: Path) -> int:
     result["program_time"] = time.perf_counter() - t_start
     if job.get("inspect_times") is not None:
         harness.inspector = start_inspection(harness, job["inspect_times"], result, bool(job.get("inspect_loads")))
+    if job.get("motion") is not None:
+        harness.motion = start_motion(harness, job["motion"], result)
     t_solve = time.perf_counter()
     try:
         harness.guard(True)  # the program's user functions run inside the solver
@@ -120,6 +122,22 @@ def start_inspection(harness: Harness, times: list[float], result: dict[str, Any
         return recorder
     except Exception as exc:
         result.setdefault("warnings", []).append(f"model inspector unavailable: {exc}")
+        return None
+    finally:
+        harness.guard(False)
+
+
+def start_motion(harness: Harness, grid: dict[str, Any], result: dict[str, Any]) -> Any:
+    """The bodies' motion recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
+    from meceng.tools.inspection import MotionRecorder
+
+    try:
+        harness.guard(True)
+        recorder = MotionRecorder(harness.mbs, harness.api, float(grid["end"]), int(grid["samples"]))
+        recorder.after_step(0.0, initial=True)
+        return recorder
+    except Exception as exc:
+        result.setdefault("warnings", []).append(f"motion recorder unavailable: {exc}")
         return None
     finally:
         harness.guard(False)
@@ -155,6 +173,9 @@ def _write_result(workdir: Path, result: dict[str, Any], harness: Harness) -> No
             q = np.vstack([r for _, r in rows])
             np.save(workdir / f"trajectory-{harness.token}.npy", np.column_stack([times, q]))
             result["trajectory_rows"] = len(rows)
+    if harness.motion is not None:
+        result["motion"] = {"bodies": harness.motion.bodies, "failed": harness.motion.failed}
+        np.savez(workdir / f"motion-{harness.token}.npz", **harness.motion.arrays())
     tmp = workdir / f"result-{harness.token}.json.tmp"
     tmp.write_text(json.dumps(result))
     os.replace(tmp, workdir / f"result-{harness.token}.json")

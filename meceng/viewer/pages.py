@@ -22,7 +22,28 @@ from meceng.viewer.diff import side_by_side
 SHOWN = {"id", "slug", "name", "level", "seed", "params", "description", "required_components", "origin", "stages",
          "overall", "first_failure", "error_categories", "differences", "solution_norm", "infrastructure_error",
          "selection", "generation", "execution", "reference_execution", "timing", "tokens", "files", "evaluator",
-         "part", "parts", "agent", "traceback", "topology_causes", "repair"}
+         "part", "parts", "agent", "traceback", "topology_causes", "repair",
+         "behaviour"}
+
+
+def _behaviour(block: dict[str, Any]) -> str:
+    """The behaviour verdict beside the paper's: its word, the matched bodies, where the motions part
+    (the dotted red line on the trajectory plot)."""
+    word = {True: "passes", False: "fails", None: "not evaluated"}[block.get("passed")]
+
+    def deviation(d: dict[str, Any] | None) -> str:
+        if not d:
+            return "–"
+        return (f"{d['quantity']} of body {d['body']} (program's {d['candidate_body']}) at t = {d['time']} s: "
+                f"{d['value']} vs tolerance {d['tolerance']}")
+
+    matched = ", ".join(f"program #{m['candidate']} ↔ ground truth #{m['truth']}" for m in block.get("matching", []))
+    return _kv([("behaviour", esc(f"{word}: {block.get('detail', '')}")), ("matched bodies", esc(matched or "none")),
+                ("motions part", esc(deviation(block.get("first_divergence")))),
+                ("largest deviation", esc(deviation(block.get("largest")))),
+                ("tolerance", esc(f"{block.get('relative')} of the scales {block.get('scales')}; compared until "
+                                  f"{block.get('compared_until')} s; widened by the step error: "
+                                  f"{', '.join(block.get('widened_by_step_error') or []) or 'none'}"))])
 
 
 def esc(value: Any) -> str:
@@ -216,6 +237,9 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
         s += ["<h2 id='differences'>Graph differences by error category</h2>", _differences(record)]
     if system is not None:
         s += ["<h2 id='system'>System: program vs ground truth</h2>", system]
+    if record.get("behaviour"):
+        s += ["<h2 id='behaviour'>Behaviour: does it move as the ground truth does?</h2>",
+              _behaviour(record["behaviour"])]
     if "trajectory" in images:
         s += ["<h2 id='solution'>Numerical solution: program vs ground truth</h2>",
               "<p class='muted'>the coordinates that differ most; the full trajectories were resampled to ≤ 200 "

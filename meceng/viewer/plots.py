@@ -69,9 +69,11 @@ def _figure(rows: int, cols: int) -> tuple[Any, list[Any], list[tuple[Any, Any]]
     return _FIGURES[(rows, cols)]
 
 
-def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COORDINATES) -> bool:
+def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COORDINATES,
+                    mark: float | None = None) -> bool:
     """Program (dashed) vs ground truth (solid) over time, one panel per coordinate, the ones
-    that differ most first. False when the traces hold no trajectory."""
+    that differ most first; ``mark``: a vertical line where the behaviour verdict saw the motions
+    part. False when the traces hold no trajectory."""
     if "ref_q" not in traces or traces["ref_q"].shape[1] == 0:
         return False
     picked = _differing(traces, count)
@@ -89,7 +91,11 @@ def trajectory_plot(traces: dict[str, Any], path: Path, count: int = PLOTTED_COO
         ax.relim(visible_only=True)
         ax.autoscale_view()
         ax.set_title(f"coordinate q[{int(traces['coordinates'][k])}]", fontsize=9, pad=3)
+    marks = [ax.axvline(mark, color="tab:red", linewidth=0.8, linestyle=":") for ax in axes[:len(picked)]] \
+        if mark is not None else []
     fig.savefig(path, dpi=80)
+    for line in marks:  # the figure is reused for the next record
+        line.remove()
     return True
 
 

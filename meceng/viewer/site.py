@@ -89,7 +89,12 @@ def write_page(run_index: int, position: int, out: Path) -> int:
     source = traces_path(run.path, record_key(record))
     if (want_trajectory or want_part) and source.exists():
         traces: dict[str, Any] | None = None
-        for kind, wanted, draw in (("trajectory", want_trajectory, trajectory_plot), ("part", want_part, part_plot)):
+        parted = ((record.get("behaviour") or {}).get("first_divergence") or {}).get("time")
+
+        def trajectory(data: dict[str, Any], png: Path) -> bool:
+            return trajectory_plot(data, png, mark=parted)
+
+        for kind, wanted, draw in (("trajectory", want_trajectory, trajectory), ("part", want_part, part_plot)):
             png = folder / f"{target.stem}.{kind[:4]}.png"
             if not wanted:
                 continue
