@@ -23,11 +23,11 @@ import sys
 import time
 from pathlib import Path
 
-from meceng.agents.inspect.scene import build_scene
-from meceng.agents.inspect.snapshot import draw
-from meceng.agents.inspect.view import build_view
 from meceng.agents.toolbox import Toolbox
 from meceng.catalog.catalogs import rigid_catalog
+from meceng.inspect.scene import build_scene
+from meceng.inspect.snapshot import draw
+from meceng.inspect.view import build_view
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import ExecutionLimits
 from meceng.tools.executor import execute

@@ -9,10 +9,10 @@ from pathlib import Path
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.inspect.answer import num
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox
 from meceng.catalog.catalogs import part_catalog, rigid_catalog
+from meceng.inspect.answer import num
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry

@@ -17,7 +17,7 @@ from meceng.tasks.alternatives import ALTERNATIVES
 from meceng.tasks.drafts import candidate_drafts
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import ExecutionLimits
-from meceng.tools.inspection import MOTION_BUDGET
+from meceng.tools.motion import MOTION_BUDGET
 
 T = np.linspace(0.0, 2.0, 101)
 

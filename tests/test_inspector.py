@@ -17,12 +17,12 @@ import numpy as np
 import pytest
 from fake_ollama import FakeOllama, chat_reply
 
-from meceng.agents.inspect.answer import num
-from meceng.agents.inspect.forms import box_half_sizes
-from meceng.agents.inspect.view import build_view
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.toolbox import Toolbox
 from meceng.catalog.catalogs import rigid_catalog
+from meceng.inspect.answer import num
+from meceng.inspect.forms import box_half_sizes
+from meceng.inspect.view import build_view
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.registry import default_registry

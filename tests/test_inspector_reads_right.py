@@ -13,12 +13,12 @@ import re
 import numpy as np
 import pytest
 
-from meceng.agents.inspect.answer import num, vec
-from meceng.agents.inspect.scene import build_scene
-from meceng.agents.inspect.system import SystemView
-from meceng.agents.inspect.view import build_view
 from meceng.agents.toolbox import Toolbox
 from meceng.catalog.catalogs import rigid_catalog
+from meceng.inspect.answer import num, vec
+from meceng.inspect.scene import build_scene
+from meceng.inspect.system import SystemView
+from meceng.inspect.view import build_view
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import ExecutionLimits
 from meceng.tools.executor import execute
@@ -248,7 +248,7 @@ async def test_the_snapshot_draws_bodies_by_their_inertia_and_joints_at_every_ti
     gyro = await _view("gyroscope_on_spherical_joint")
     roles = {s.role for s in build_scene(gyro, 0.0) if s.kind == "point"}
     assert "spherical" in roles
-    from meceng.agents.inspect.snapshot import spread_labels
+    from meceng.inspect.snapshot import spread_labels
 
     apart = spread_labels([(np.zeros(2), "#1"), (np.zeros(2), "#2")], np.ones(2))
     assert apart[0][0] != apart[1][0]

@@ -196,7 +196,7 @@ async def test_task_pages_draw_the_programs_system_beside_the_ground_truths(tmp_
     stand apart in the same view, on every page of a rigid record (passing ones too)."""
     import re
 
-    from meceng.agents.inspect.scene import VIEWS
+    from meceng.inspect.scene import VIEWS
     from meceng.pipeline import RunSettings, run_benchmark
     from meceng.pipeline.rescore import evaluate_program
     from meceng.tasks.registry import default_registry

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from meceng.agents.inspect.bodies import QUANTITIES
+from meceng.inspect.bodies import QUANTITIES
 
 _CODE = {"type": "string", "description": "the complete program, as you would answer it"}
 

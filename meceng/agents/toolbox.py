@@ -18,12 +18,12 @@ from typing import Any
 import numpy as np
 
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
-from meceng.agents.inspect import snapshot as pictures
-from meceng.agents.inspect.answer import render
-from meceng.agents.inspect.bodies import QUANTITIES, Ask
-from meceng.agents.inspect.view import build_view
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
+from meceng.inspect import snapshot as pictures
+from meceng.inspect.answer import render
+from meceng.inspect.bodies import QUANTITIES, Ask
+from meceng.inspect.view import build_view
 from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.executor import execute

@@ -33,7 +33,7 @@ from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
 
 #: Samples of the bodies' motion per execution (fewer when a system has many bodies:
-#: ``tools/inspection.MOTION_BUDGET``).
+#: ``tools/motion.MOTION_BUDGET``).
 MOTION_SAMPLES = 201
 #: The ground truth's own time-stepping error is measured against a run with this many times the steps.
 REFINE = 2

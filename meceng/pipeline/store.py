@@ -37,7 +37,7 @@ log = get_logger(__name__)
 STACK = ("exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "pymeshlab", "meceng")
 #: the harness code that decides what an execution captures
 CAPTURE_MODULES = ("runner.py", "harness.py", "part_runner.py", "guard.py", "executor.py", "execution.py",
-                   "inspection.py")
+                   "inspection.py", "motion.py")
 FORMAT = 1
 
 

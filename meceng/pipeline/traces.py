@@ -20,9 +20,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from meceng.agents.inspect.scene import build_scene
-from meceng.agents.inspect.view import build_view
 from meceng.eval.solution import resample
+from meceng.inspect.scene import build_scene
+from meceng.inspect.view import build_view
 from meceng.logs import get_logger
 from meceng.syntax import parsing
 

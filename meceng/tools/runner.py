@@ -129,7 +129,7 @@ def start_inspection(harness: Harness, times: list[float], result: dict[str, Any
 
 def start_motion(harness: Harness, grid: dict[str, Any], result: dict[str, Any]) -> Any:
     """The bodies' motion recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
-    from meceng.tools.inspection import MotionRecorder
+    from meceng.tools.motion import MotionRecorder
 
     try:
         harness.guard(True)

@@ -18,8 +18,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from meceng.agents.inspect.snapshot import shaded_surface
 from meceng.eval.solution import resample
+from meceng.inspect.snapshot import shaded_surface
 from meceng.pipeline.traces import ranked_coordinates
 
 PLOTTED_COORDINATES = 6

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.scene import COLOURS, LEGEND, VIEWS, Projection, Shape, bounds, hull
+from meceng.inspect.scene import COLOURS, LEGEND, VIEWS, Projection, Shape, bounds, hull
 
 WIDTH, HEIGHT = 230, 170
 

@@ -7,8 +7,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from meceng.agents.inspect.geometry import rolling_frame, rolling_words
-from meceng.agents.inspect.system import Connector, SystemView, direction
+from meceng.inspect.geometry import rolling_frame, rolling_words
+from meceng.inspect.system import Connector, SystemView, direction
 
 
 def num(x: float) -> str:

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from meceng.agents.inspect.system import Body, Spin, direction
+from meceng.inspect.system import Body, Spin, direction
 
 CONVENTION = ("orientation: a body's local axes x and y in global terms (z = x × y); 'turned': the rotation since "
               "t = 0 about the body axis it turns about most (its angular velocity along that axis integrated, not "

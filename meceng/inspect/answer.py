@@ -9,13 +9,13 @@ from __future__ import annotations
 
 from collections import defaultdict
 
-from meceng.agents.inspect.bodies import Ask, bodies_section, motion_section, numbers, ranges_section
-from meceng.agents.inspect.orientation import CONVENTION
-from meceng.agents.inspect.system import Connector, Load, SystemView
-from meceng.agents.inspect.words import connector_line as _connector_line
-from meceng.agents.inspect.words import name_of as _name_of
-from meceng.agents.inspect.words import num, vec
-from meceng.agents.inspect.words import value_text as _value
+from meceng.inspect.bodies import Ask, bodies_section, motion_section, numbers, ranges_section
+from meceng.inspect.orientation import CONVENTION
+from meceng.inspect.system import Connector, Load, SystemView
+from meceng.inspect.words import connector_line as _connector_line
+from meceng.inspect.words import name_of as _name_of
+from meceng.inspect.words import num, vec
+from meceng.inspect.words import value_text as _value
 
 
 def _group_key(c: Connector) -> tuple[str, str]:

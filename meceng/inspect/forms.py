@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from meceng.agents.inspect.system import Body, BodyState
-from meceng.agents.inspect.words import num, vec
+from meceng.inspect.system import Body, BodyState
+from meceng.inspect.words import num, vec
 
 _EQUAL = 1e-3  # relative difference of moments taken as equal
 _RIM = 24  # points on each rim circle of a drawn disc

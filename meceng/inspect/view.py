@@ -13,9 +13,10 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.geometry import rolling_disc, sphere_triangle
-from meceng.agents.inspect.orientation import spins
-from meceng.agents.inspect.system import (
+from meceng.catalog.names import BODY_KINDS, load_name, object_name
+from meceng.inspect.geometry import rolling_disc, sphere_triangle
+from meceng.inspect.orientation import spins
+from meceng.inspect.system import (
     Body,
     BodyState,
     Connector,
@@ -25,7 +26,6 @@ from meceng.agents.inspect.system import (
     SystemView,
     direction,
 )
-from meceng.catalog.names import BODY_KINDS, load_name, object_name
 
 #: Item keys that are bookkeeping, not physics; left out of a connector's parameters.
 _NOT_PARAMETERS = frozenset({"objectType", "name", "markerNumbers", "activeConnector", "nodeNumber", "nodeNumbers",

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from meceng.agents.inspect.orientation import axes_text, turned_text
-from meceng.agents.inspect.system import Body, BodyState, SystemView, direction
-from meceng.agents.inspect.words import name_of, num, vec
+from meceng.inspect.orientation import axes_text, turned_text
+from meceng.inspect.system import Body, BodyState, SystemView, direction
+from meceng.inspect.words import name_of, num, vec
 
 QUANTITIES = ("position", "orientation", "velocity", "angular_velocity")
 FAMILY = 4  # alike bodies folded into one line in a large system

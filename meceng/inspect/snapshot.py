@@ -23,10 +23,10 @@ from matplotlib.collections import LineCollection, PatchCollection
 from matplotlib.patches import Circle, Polygon
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from meceng.agents.inspect.answer import num, vec
-from meceng.agents.inspect.forms import form, form_words
-from meceng.agents.inspect.geometry import placed, rolling_frame
-from meceng.agents.inspect.scene import (
+from meceng.inspect.answer import num, vec
+from meceng.inspect.forms import form, form_words
+from meceng.inspect.geometry import placed, rolling_frame
+from meceng.inspect.scene import (
     COLOURS,
     JOINTS,
     LEGEND,
@@ -40,7 +40,7 @@ from meceng.agents.inspect.scene import (
     joint_axis,
     sample_index,
 )
-from meceng.agents.inspect.system import SystemView, direction
+from meceng.inspect.system import SystemView, direction
 
 _AXIS_NAMES = "xyz"
 MAX_LABELS = 40  # body numbers per panel; a larger system names the first ones

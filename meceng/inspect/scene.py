@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from meceng.agents.inspect.forms import outline_points
-from meceng.agents.inspect.geometry import placed, rolling_frame
-from meceng.agents.inspect.system import Connector, SystemView
+from meceng.inspect.forms import outline_points
+from meceng.inspect.geometry import placed, rolling_frame
+from meceng.inspect.system import Connector, SystemView
 
 Point = tuple[float, float, float]
 
