@@ -63,7 +63,8 @@ def case_of(tmp_path_factory: pytest.TempPathFactory):
     return get
 
 
-CASES = [(TURBINE, 0), (BENCH, 0), (BENCH, 1)]
+#: a second seed of the bench in the slow suite (the default suite keeps one seed of each machine)
+CASES = [(TURBINE, 0), (BENCH, 0), pytest.param(BENCH, 1, marks=pytest.mark.slow)]
 
 
 @pytest.mark.parametrize(("slug", "seed"), CASES)

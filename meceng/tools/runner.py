@@ -23,6 +23,7 @@ import json
 import os
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -115,29 +116,34 @@ def start_inspection(harness: Harness, times: list[float], result: dict[str, Any
     """The inspector's recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
     from meceng.tools.inspection import InspectionRecorder
 
-    try:
-        harness.guard(True)  # the system is the program's: read it under the same guard
+    def start() -> Any:
         recorder = InspectionRecorder(harness.mbs, harness.api, list(times), loads=loads)
         recorder.take(0.0, initial=True)
         return recorder
-    except Exception as exc:
-        result.setdefault("warnings", []).append(f"model inspector unavailable: {exc}")
-        return None
-    finally:
-        harness.guard(False)
+
+    return _start_recorder(harness, result, start, "model inspector")
 
 
 def start_motion(harness: Harness, grid: dict[str, Any], result: dict[str, Any]) -> Any:
     """The bodies' motion recorder with the state at t = 0; None (and a warning) if Exudyn refuses."""
     from meceng.tools.motion import MotionRecorder
 
-    try:
-        harness.guard(True)
+    def start() -> Any:
         recorder = MotionRecorder(harness.mbs, harness.api, float(grid["end"]), int(grid["samples"]))
         recorder.after_step(0.0, initial=True)
         return recorder
+
+    return _start_recorder(harness, result, start, "motion recorder")
+
+
+def _start_recorder(harness: Harness, result: dict[str, Any], start: Callable[[], Any], what: str) -> Any:
+    """A recorder made and given its first state under the program's guard (the system is the
+    program's); a recorder Exudyn refuses is a warning, never a failed run."""
+    try:
+        harness.guard(True)
+        return start()
     except Exception as exc:
-        result.setdefault("warnings", []).append(f"motion recorder unavailable: {exc}")
+        result.setdefault("warnings", []).append(f"{what} unavailable: {exc}")
         return None
     finally:
         harness.guard(False)
