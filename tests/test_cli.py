@@ -82,6 +82,19 @@ def test_run_summary_names_lost_tasks_and_how_to_finish_them(tmp_path, capsys) -
     assert f"meceng run --resume {tmp_path}" in out and "1 task lost to the server" in out
 
 
+def test_run_summary_says_the_behaviour_rate_and_where_it_differs_from_the_paper(tmp_path, capsys) -> None:
+    from meceng.cli.commands import print_summary
+
+    behaviour = {"graded": 3, "passed": 2, "rate": 2 / 3, "both_pass": 1, "both_fail": 1, "paper_only": 0,
+                 "behaviour_only": 1, "disagreements": []}
+    summary = {"counted": 3, "infrastructure_failures": 0, "behaviour": behaviour,
+               "levels": {"1": {"counted": 3, "infrastructure_failures": 0, "rates": {"overall": 1 / 3}}}}
+    (tmp_path / "run.json").write_text(json.dumps({"summary": summary, "tasks": []}))
+    print_summary(tmp_path / "run.json")
+    out = capsys.readouterr().out
+    assert "behaviour (levels 1, 2, 3b): 2/3 passed (66.7%); the paper's verdict differs on 1" in out
+
+
 def test_resume_on_another_server(tmp_path) -> None:
     """--resume keeps everything a run measures; --host says where the server is now."""
     from meceng.cli import build_parser

@@ -172,6 +172,12 @@ def print_summary(run_json: Path) -> None:
         print(f"level {level} ({block['counted']}): {line}"
               + (f"  [{lost_here} lost to the server]" if lost_here else "")
               + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
+    behaviour = summary.get("behaviour")
+    if behaviour and behaviour.get("graded"):
+        differ = behaviour["paper_only"] + behaviour["behaviour_only"]
+        print(f"behaviour (levels 1, 2, 3b): {behaviour['passed']}/{behaviour['graded']} passed "
+              f"({100 * behaviour['rate']:.1f}%); the paper's verdict differs on {differ} "
+              f"({behaviour['behaviour_only']} pass behaviour only, {behaviour['paper_only']} the paper only)")
     totals = summary.get("tokens", {}).get("totals")
     if totals:
         print(f"tokens: {totals['prompt']:,} prompt, {totals['completion']:,} completion "
