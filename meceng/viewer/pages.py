@@ -34,16 +34,23 @@ def _behaviour(block: dict[str, Any]) -> str:
     def deviation(d: dict[str, Any] | None) -> str:
         if not d:
             return "–"
-        return (f"{d['quantity']} of body {d['body']} (program's {d['candidate_body']}) at t = {d['time']} s: "
-                f"{d['value']} vs tolerance {d['tolerance']}")
+        return (f"{d['quantity']} of body {d['body']} (program's {d['candidate_body']}) at t = {_g(d['time'])} s: "
+                f"{_g(d['value'])} vs tolerance {_g(d['tolerance'])}")
+
+    scales = ", ".join(f"{name.replace('_', ' ')} {_g(value)}" for name, value in (block.get("scales") or {}).items())
 
     matched = ", ".join(f"program #{m['candidate']} ↔ ground truth #{m['truth']}" for m in block.get("matching", []))
     return _kv([("behaviour", esc(f"{word}: {block.get('detail', '')}")), ("matched bodies", esc(matched or "none")),
                 ("motions part", esc(deviation(block.get("first_divergence")))),
                 ("largest deviation", esc(deviation(block.get("largest")))),
-                ("tolerance", esc(f"{block.get('relative')} of the scales {block.get('scales')}; compared until "
-                                  f"{block.get('compared_until')} s; widened by the step error: "
+                ("tolerance", esc(f"{block.get('relative')} of the scales ({scales}); compared until "
+                                  f"{_g(block.get('compared_until'))} s; widened by the step error: "
                                   f"{', '.join(block.get('widened_by_step_error') or []) or 'none'}"))])
+
+
+def _g(value: Any) -> str:
+    """A number as a reader wants it (4 significant digits); anything else as it is."""
+    return f"{value:.4g}" if isinstance(value, int | float) and not isinstance(value, bool) else str(value)
 
 
 def esc(value: Any) -> str:
