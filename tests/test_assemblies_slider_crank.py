@@ -74,8 +74,10 @@ def made(tmp_path_factory: pytest.TempPathFactory) -> Made:
 @pytest.fixture(scope="module")
 def references(made: Made) -> dict[Case, Execution]:
     def make(cases: tuple[Case, ...]) -> dict[Case, Execution]:
+        inputs = [made[case] for case in cases]  # parts made (outside the loop below) before the runs
+
         async def run_all() -> list[Execution]:
-            return await asyncio.gather(*(run_assembly(*made[case]) for case in cases))
+            return await asyncio.gather(*(run_assembly(*given) for given in inputs))
 
         return dict(zip(cases, asyncio.run(run_all()), strict=True))
 
