@@ -21,6 +21,9 @@ from typing import Any
 
 import numpy as np
 
+#: The kinds of task text: the paper's, which says how to write the program, and an engineer's.
+TEXTS = ("paper", "open")
+
 #: Lines every program starts with; the LLM is told to use the same names.
 PREAMBLE = """\
 import exudyn as exu
@@ -106,6 +109,7 @@ class TaskInstance:
     origin: str = ""  # key of the assembly instance a part was drawn for
     parts: tuple[tuple[str, TaskInstance], ...] = ()  # an assembly's (slot, part instance)
     draft: Any = None  # a repair task's Draft (tasks.drafts): the program with a seeded fault
+    texts: str = "paper"  # which description: the paper's, or "open" (an engineer's words)
 
     @property
     def key(self) -> str:
@@ -123,6 +127,7 @@ class TaskInstance:
             "description": self.description,
             "required_components": list(self.required_components),
             "kind": self.kind,
+            **({"texts": self.texts} if self.texts != "paper" else {}),
             **({"sim": {"end_time": self.sim.end_time, "steps": self.sim.steps}} if self.sim else {}),
             **({"part": self.part.to_json()} if self.part is not None else {}),
             **({"origin": self.origin} if self.origin else {}),
@@ -149,6 +154,10 @@ class TaskModel:
     model_code: str
     sim: SimSettings
     derive: Any = None  # Callable[[dict], dict] | None; Any keeps the dataclass hashable
+    #: The same system in an engineer's words: every parameter and the initial state, but no
+    #: Exudyn or catalog names, no creation or marker order, no reference points or local axes.
+    #: Graded by behaviour, since the paper's graph stages compare how a program is written.
+    open_description: str = ""
 
     @property
     def slug(self) -> str:
@@ -161,13 +170,21 @@ class TaskModel:
             values.update(self.derive(dict(values)))
         return values
 
-    def instance(self, seed: int) -> TaskInstance:
-        values = self.sample_params(seed)
-        description = self.description.format(**values).strip()
-        description = " ".join(description.split())
-        description += (
+    def describe(self, values: dict[str, Any], texts: str = "paper") -> str:
+        """The task text for drawn ``values``: the paper's (``texts="paper"``) or the open one."""
+        if texts not in TEXTS:
+            raise ValueError(f"unknown texts {texts!r}: choose one of {', '.join(TEXTS)}")
+        template = self.description if texts == "paper" else self.open_description
+        if not template:
+            raise ValueError(f"task model {self.slug!r} has no {texts} text")
+        description = " ".join(template.format(**values).split())
+        return description + (
             f" Simulate the system for {self.sim.end_time:g} s using {self.sim.steps} time steps."
         )
+
+    def instance(self, seed: int, texts: str = "paper") -> TaskInstance:
+        values = self.sample_params(seed)
+        description = self.describe(values, texts)
         return TaskInstance(
             task_id=self.id,
             slug=self.slug,
@@ -179,6 +196,7 @@ class TaskModel:
             required_components=self.components,
             sim=self.sim,
             reference_program=self.reference_program(values, description, seed),
+            texts=texts,
         )
 
     def reference_program(self, values: dict[str, Any], description: str, seed: int) -> str:

@@ -29,6 +29,16 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative y-direction. Create the ground, then the link,
         then the revolute joint between ground and link.
     """,
+    open_description="""
+        A physical pendulum: a homogeneous rigid bar of rectangular cross-section, density
+        {density} kg/m^3, length L = {length} m, width {width} m and thickness {thickness} m. One
+        end of the bar is pinned to the fixed world at the origin [0, 0, 0] by a frictionless hinge
+        whose axis is the global z-axis; the bar's thickness lies along the hinge axis, and its
+        width and length lie in the x-y plane, so it swings in that plane. Gravity
+        g = {gravity} m/s^2 acts in the negative y-direction. At the start the bar is at rest,
+        turned {angle_deg} degrees from hanging straight down, towards positive x: its free end is
+        at x > 0, y < 0.
+    """,
     params=(
         Param("density", 500.0, 8000.0, "kg/m^3"),
         Param("length", 0.3, 1.5, "m"),
