@@ -26,6 +26,20 @@ TASK = TaskModel(
         position; both start with zero velocity. Gravity is neglected. Create mass point 1, then
         mass point 2, then spring-damper 1, then spring-damper 2.
     """,
+    open_description="""
+        A double mass oscillator along the x-axis without gravity: two point masses (no rotational
+        inertia) in series on two linear spring-dampers, each acting along the line between its two
+        end points, with damping force proportional to the rate of change of its length.
+        Spring-damper 1 (stiffness k1 = {stiffness1} N/m, damping coefficient d1 = {damping1} N*s/m,
+        unstretched length L1 = {length1} m) joins a fixed point at the origin [0, 0, 0] to mass 1
+        (m1 = {mass1} kg); spring-damper 2 (stiffness k2 = {stiffness2} N/m, damping coefficient
+        d2 = {damping2} N*s/m, unstretched length L2 = {length2} m) joins mass 1 to mass 2
+        (m2 = {mass2} kg). With both springs unstretched, mass 1 sits at [{length1}, 0, 0] m and
+        mass 2 at [{length1} + {length2}, 0, 0] m. At the start both masses are at rest; mass 1 is
+        at its unstretched position and mass 2 is pulled {displacement} m further in the positive
+        x-direction from its unstretched position, so only spring 2 is stretched, by
+        {displacement} m.
+    """,
     params=(
         Param("mass1", 0.5, 5.0, "kg"),
         Param("mass2", 0.5, 5.0, "kg"),

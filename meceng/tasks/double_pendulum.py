@@ -28,6 +28,17 @@ TASK = TaskModel(
         mass points' reference positions as p1 and p2. Create mass point 1, then mass point 2, then
         the distance constraint of rod 1, then that of rod 2.
     """,
+    open_description="""
+        A double pendulum in the x-y plane made of two point masses (no rotational inertia) and two
+        massless rigid rods with frictionless pins; each rod only keeps the distance between its two
+        ends fixed. Rod 1, of length L1 = {length1} m, runs from a fixed support at the origin
+        [0, 0, 0] to mass 1 (m1 = {mass1} kg); rod 2, of length L2 = {length2} m, runs from mass 1
+        to mass 2 (m2 = {mass2} kg). Gravity g = {gravity} m/s^2 acts in the negative y-direction.
+        At the start both masses are at rest; rod 1 is turned phi1 = {angle1_deg} degrees and rod 2
+        phi2 = {angle2_deg} degrees from hanging straight down (both angles absolute, measured from
+        the downward vertical, a positive angle towards positive x), so mass 1 is at
+        p1 = [L1*sin(phi1), -L1*cos(phi1), 0] and mass 2 at p1 + [L2*sin(phi2), -L2*cos(phi2), 0].
+    """,
     params=(
         Param("mass1", 0.2, 3.0, "kg"),
         Param("mass2", 0.2, 3.0, "kg"),

@@ -17,6 +17,12 @@ TASK = TaskModel(
         negative z-direction. No other forces act on the mass point; there is no ground, air
         resistance or contact.
     """,
+    open_description="""
+        A projectile: a point mass m = {mass} kg (no rotational inertia) flies freely under gravity
+        g = {gravity} m/s^2, which acts in the negative z-direction. At the start it is at the
+        position [0, 0, {height}] m and moves with the velocity [{vx}, {vy}, {vz}] m/s. No other
+        force acts on it: there is no ground, no air resistance and no contact.
+    """,
     params=(
         Param("mass", 0.5, 5.0, "kg"),
         Param("height", 0.0, 5.0, "m"),

@@ -17,6 +17,12 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction. No other forces act on the mass
         point; there is no ground, air resistance or contact.
     """,
+    open_description="""
+        Free fall: a point mass m = {mass} kg (no rotational inertia) is released from rest at the
+        position [{x0}, {y0}, {height}] m, i.e. at the height {height} m. Gravity
+        g = {gravity} m/s^2 acts in the negative z-direction. No other force acts on it: there is no
+        ground, no air resistance and no contact.
+    """,
     params=(
         Param("mass", 0.2, 5.0, "kg"),
         Param("x0", -1.0, 1.0, "m"),

@@ -30,6 +30,17 @@ TASK = TaskModel(
         returns [F0*sin(omega*t), 0, 0]. Gravity is neglected. Create the ground, the mass point,
         the spring-damper and then the force.
     """,
+    open_description="""
+        A harmonically excited mass oscillator without gravity: a point mass m = {mass} kg (no
+        rotational inertia) is tied to a fixed point at the origin [0, 0, 0] by a linear
+        spring-damper that acts along the line between the fixed point and the mass, with stiffness
+        k = {stiffness} N/m, damping coefficient d = {damping} N*s/m (force proportional to the rate
+        of change of its length) and unstretched length L = {length} m. At the start the mass is at
+        rest at [{length}, 0, 0] m, where the spring is unstretched. From the start on, a force
+        along the x-axis with the value F(t) = F0*sin(omega*t) N acts on the mass, with amplitude
+        F0 = {force_amplitude} N, angular frequency omega = {omega} rad/s and t the time in s since
+        the start (positive values push in the positive x-direction). Gravity is neglected.
+    """,
     params=(
         Param("mass", 0.5, 2.0, "kg"),
         Param("stiffness", 500.0, 2000.0, "N/m"),

@@ -30,6 +30,17 @@ TASK = TaskModel(
         mass point (index n). Gravity is neglected. Create the ground, then the mass points in the
         order of their index, then the spring-dampers in the order of their index, then the force.
     """,
+    open_description="""
+        An n-mass oscillator along the x-axis without gravity: a chain of n = {n_masses} identical
+        point masses (no rotational inertia), each of mass m = {mass} kg, numbered i = 1 to n from
+        the fixed end, linked by n identical linear spring-dampers with stiffness
+        k = {stiffness} N/m, damping coefficient d = {damping} N*s/m (force proportional to the rate
+        of change of its length, acting along the line between its end points) and unstretched
+        length L = {length} m. Spring-damper 1 joins a fixed point at the origin [0, 0, 0] to mass
+        1, and spring-damper i (i = 2 to n) joins mass i-1 to mass i. At the start all springs are
+        unstretched, so mass i is at [i*L, 0, 0], and all masses are at rest. A constant force of
+        {force} N in the positive x-direction acts on the last mass (mass n) from the start on.
+    """,
     params=(
         Param("n_masses", 2, 8, "", integer=True),
         Param("mass", 0.5, 3.0, "kg"),

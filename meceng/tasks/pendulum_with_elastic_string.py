@@ -32,6 +32,17 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative y-direction. Create the ground, the mass point and
         then the spring-damper.
     """,
+    open_description="""
+        An elastic pendulum in the x-y plane: a point mass m = {mass} kg (no rotational inertia)
+        hangs from a fixed support at the origin [0, 0, 0] on an elastic string, idealised as a
+        massless linear spring-damper acting along the line from the support to the mass (it pulls
+        when stretched and also pushes when compressed), with stiffness k = {stiffness} N/m, damping
+        coefficient d = {damping} N*s/m (force proportional to the rate of change of its length) and
+        unstretched length L = {length} m. Gravity g = {gravity} m/s^2 acts in the negative
+        y-direction. At the start the string is unstretched and turned {angle_deg} degrees from
+        hanging straight down towards positive x, so the mass is at [L*sin(phi0), -L*cos(phi0), 0]
+        with phi0 = {angle_deg} degrees, and the mass moves with the velocity [{vx}, {vy}, 0] m/s.
+    """,
     params=(
         Param("mass", 0.5, 2.0, "kg"),
         Param("length", 0.5, 1.5, "m"),

@@ -18,6 +18,16 @@ TASK = TaskModel(
         displacement of [{displacement}, 0, 0] m from its reference position and with zero
         velocity. Gravity is neglected.
     """,
+    open_description="""
+        A single mass oscillator without gravity: a point mass m = {mass} kg (no rotational inertia)
+        is tied to a fixed point at the origin [0, 0, 0] by a linear spring-damper that acts along
+        the line between the fixed point and the mass, with stiffness k = {stiffness} N/m, damping
+        coefficient d = {damping} N*s/m (force proportional to the rate of change of its length) and
+        unstretched length L = {length} m. With the spring unstretched the mass would sit at
+        [{length}, 0, 0] m. At the start the mass is at rest, pulled {displacement} m further along
+        the positive x-direction from that point, so the spring is stretched by {displacement} m.
+        Gravity is neglected.
+    """,
     params=(
         Param("mass", 0.5, 5.0, "kg"),
         Param("stiffness", 100.0, 2000.0, "N/m"),

@@ -21,6 +21,17 @@ TASK = TaskModel(
         an initial displacement of [0, {displacement}, 0] m from its reference position (i.e. it
         is lifted by {displacement} m) and with zero velocity.
     """,
+    open_description="""
+        A vertical single mass oscillator: a point mass m = {mass} kg (no rotational inertia) hangs
+        below a fixed point at the origin [0, 0, 0] on a linear spring-damper that acts along the
+        line between the fixed point and the mass, with stiffness k = {stiffness} N/m, damping
+        coefficient d = {damping} N*s/m (force proportional to the rate of change of its length) and
+        unstretched length L = {length} m. With the spring unstretched the mass would sit directly
+        below the fixed point at [0, -{length}, 0] m. Gravity g = {gravity} m/s^2 acts in the
+        negative y-direction. At the start the mass is at rest, lifted {displacement} m straight up
+        (in the positive y-direction) from that point, so the spring is compressed by
+        {displacement} m.
+    """,
     params=(
         Param("mass", 0.5, 5.0, "kg"),
         Param("stiffness", 200.0, 2000.0, "N/m"),

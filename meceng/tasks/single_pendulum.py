@@ -18,6 +18,14 @@ TASK = TaskModel(
         p0 = [L*sin(phi0), -L*cos(phi0), 0] and starts from rest. Gravity g = {gravity} m/s^2 acts
         in the negative y-direction. Define the mass point's reference position as p0.
     """,
+    open_description="""
+        A simple pendulum: a point mass m = {mass} kg (no rotational inertia) on a massless rigid
+        rod of length L = {length} m, whose other end is pinned to a fixed support at the origin
+        [0, 0, 0] without friction; the rod only keeps the distance between support and mass equal
+        to L. Gravity g = {gravity} m/s^2 acts in the negative y-direction. At the start the mass is
+        at rest with the rod turned phi0 = {angle_deg} degrees from hanging straight down towards
+        positive x, i.e. at [L*sin(phi0), -L*cos(phi0), 0], so the pendulum swings in the x-y plane.
+    """,
     params=(
         Param("mass", 0.2, 3.0, "kg"),
         Param("length", 0.3, 2.0, "m"),

@@ -42,6 +42,22 @@ TASK = TaskModel(
         ground, the crank mass, the slider mass, then the crank constraint, the rod constraint,
         the three coordinate constraints in the order given, and then the force.
     """,
+    open_description="""
+        A slider-crank mechanism in the x-y plane made of two point masses (no rotational inertia)
+        and two massless rigid links. The crank is a massless rigid link of length
+        r = {crank_length} m that turns about a fixed pivot at the origin [0, 0, 0]; at its other
+        end, the crank pin, sits the first point mass m1 = {mass_crank} kg, which can move only in
+        the x-y plane. The connecting rod is a massless rigid link of length l = {rod_length} m
+        between the crank pin and the slider, the second point mass m2 = {mass_slider} kg, which can
+        move only along the x-axis. The links keep the distances r (pivot to crank pin) and l (crank
+        pin to slider) exactly; the pivot, the pins and the slider guide are frictionless. At the
+        start both masses are at rest; the crank points at the angle
+        theta0 = {crank_angle_deg} degrees measured counter-clockwise from the positive x-axis, so
+        the crank pin is at [r*cos(theta0), r*sin(theta0), 0], and the slider is on the x-axis on
+        the positive-x side of the crank pin, at x = r*cos(theta0) + sqrt(l^2 - r^2*sin(theta0)^2).
+        A constant force of {force} N in the positive x-direction acts on the slider. Gravity is
+        neglected; there is no friction or damping.
+    """,
     params=(
         Param("mass_crank", 0.5, 3.0, "kg"),
         Param("mass_slider", 0.5, 3.0, "kg"),

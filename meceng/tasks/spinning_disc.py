@@ -30,6 +30,16 @@ TASK = TaskModel(
         [0, 0, {torque}] N*m applied to the disc. Gravity g = {gravity} m/s^2 acts in the negative
         y-direction on the disc. Create the ground, the disc, the revolute joint and then the torque.
     """,
+    open_description="""
+        A spinning disc: a homogeneous solid cylinder (a disc) with mass m = {mass} kg, radius
+        r = {radius} m and thickness w = {width} m along its axis. Its centre is at the origin
+        [0, 0, 0] and its axis of symmetry is the global z-axis. It is held by a frictionless hinge
+        at its centre that keeps the centre fixed and lets the disc turn only about the global
+        z-axis. At the start the disc spins with the angular velocity {omega0} rad/s about the
+        positive z-axis (angular velocity vector [0, 0, {omega0}] rad/s), its centre at rest. A
+        constant torque of {torque} N*m about the positive z-axis drives the disc. Gravity
+        g = {gravity} m/s^2 acts in the negative y-direction (it only loads the hinge).
+    """,
     params=(
         Param("mass", 2.0, 20.0, "kg"),
         Param("radius", 0.15, 0.4, "m"),
