@@ -33,6 +33,22 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative y-direction on both mass points. Create the
         ground, mass point 1, mass point 2, then spring-damper 1 and then spring-damper 2.
     """,
+    open_description="""
+        A double pendulum with elastic strings in the x-y plane, made of two point masses. Point
+        mass 1, of mass m1 = {mass1} kg, hangs from a fixed pivot at the origin [0, 0, 0] on
+        massless linear spring-damper 1 with stiffness k1 = {stiffness1} N/m and unstretched
+        length L1 = {length1} m; point mass 2, of mass m2 = {mass2} kg, hangs from point mass 1 on
+        massless linear spring-damper 2 with stiffness k2 = {stiffness2} N/m and unstretched
+        length L2 = {length2} m. Both spring-dampers have the damping coefficient d = {damping}
+        N*s/m; each pulls or pushes along the line between its two ends with the force k times its
+        stretch plus d times the rate of change of its length. Gravity g = {gravity} m/s^2 acts in
+        the negative y-direction on both point masses. At the start both point masses are at rest
+        and both springs are unstretched; spring 1 is turned phi1 = {angle1_deg} degrees and
+        spring 2 phi2 = {angle2_deg} degrees from the downward vertical, both angles absolute
+        (measured from the vertical, not from the other spring) and positive towards positive x:
+        point mass 1 is at p1 = [L1*sin(phi1), -L1*cos(phi1), 0] and point mass 2 at p2 = p1 +
+        [L2*sin(phi2), -L2*cos(phi2), 0].
+    """,
     params=(
         Param("mass1", 0.5, 3.0, "kg"),
         Param("mass2", 0.5, 3.0, "kg"),

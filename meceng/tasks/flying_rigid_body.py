@@ -26,6 +26,16 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction. There are no joints, no other bodies,
         no ground object and no other loads; no air resistance.
     """,
+    open_description="""
+        A single free rigid body flying under gravity: a homogeneous brick (rectangular cuboid) of
+        density {density} kg/m^3 with edge lengths a = {size_x} m, b = {size_y} m and c = {size_z}
+        m. At the start its centre is at the origin [0, 0, 0] and its edges of length a, b and c
+        lie along the global x-, y- and z-axes respectively. It starts with the velocity of its
+        centre v0 = [{vel_x}, 0, {vel_z}] m/s and the angular velocity omega0 = [{omega_x},
+        {omega_y}, {omega_z}] rad/s, both given in global coordinates. Gravity g = {gravity} m/s^2
+        acts in the negative z-direction. Nothing else acts on it: no supports, no other bodies,
+        no air resistance.
+    """,
     params=(
         Param("density", 500.0, 3000.0, "kg/m^3"),
         Param("size_x", 0.3, 0.6, "m"),

@@ -33,6 +33,18 @@ TASK = TaskModel(
         initial velocity. Gravity g = {gravity} m/s^2 acts in the negative z-direction; no other
         forces and no damping. Create the ground, the disc and then the spherical joint.
     """,
+    open_description="""
+        A gyroscope (a heavy symmetric top): a homogeneous solid disc (cylinder) of mass m =
+        {mass} kg, radius r = {radius} m and thickness w = {width} m. At the start its axis of
+        symmetry is horizontal along the global x-axis and its centre is at [{offset}, 0, 0]. The
+        point [0, 0, 0] on the extension of the disc's axis, at the distance {offset} m from its
+        centre, is rigidly attached to the disc (by a massless rigid axle) and held fixed by a
+        frictionless ball joint: that point cannot move, while the disc can rotate freely about it
+        in every direction. At the start the centre of the disc is at rest and the disc spins
+        about its own axis with the angular velocity [{omega0}, 0, 0] rad/s (spin vector along
+        positive x). Gravity g = {gravity} m/s^2 acts in the negative z-direction; there are no
+        other forces and no damping.
+    """,
     params=(
         Param("mass", 5.0, 30.0, "kg"),
         Param("radius", 0.2, 0.3, "m"),

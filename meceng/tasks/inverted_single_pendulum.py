@@ -36,6 +36,17 @@ TASK = TaskModel(
         the cart, the pendulum mass, the spherical joint, the distance constraint and then the
         force.
     """,
+    open_description="""
+        An uncontrolled inverted pendulum on a cart, both idealised as point masses. The cart, a
+        point mass of m1 = {cart_mass} kg, starts at the origin [0, 0, 0] and slides without
+        friction along the global x-axis only: its y- and z-coordinates stay zero. The pendulum
+        bob, a point mass of m2 = {pendulum_mass} kg, is joined to the cart by a massless rigid
+        rod of length L = {length} m, pinned without friction at both ends (the rod only keeps the
+        distance between cart and bob at L). At the start the bob stands upright at [0, {length},
+        0], directly above the cart, and both are at rest. A constant force of {force} N in the
+        positive x-direction acts on the bob. Gravity g = {gravity} m/s^2 acts in the negative
+        y-direction on both point masses.
+    """,
     params=(
         Param("cart_mass", 1.0, 5.0, "kg"),
         Param("pendulum_mass", 0.1, 0.5, "kg"),

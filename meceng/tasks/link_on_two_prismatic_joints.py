@@ -36,6 +36,20 @@ TASK = TaskModel(
         slider 1, slider 2, the spherical joint of slider 1, that of slider 2, the distance
         constraint and then the spring-damper.
     """,
+    open_description="""
+        An elliptic trammel: a massless rigid link whose two ends are point-mass sliders on two
+        perpendicular straight guides, without friction. Slider 1, a point mass of m1 = {mass1}
+        kg, starts at [{x0}, 0, 0] and can move only along the global x-axis (its y- and
+        z-coordinates stay zero). Slider 2, a point mass of m2 = {mass2} kg, starts at [0, 0,
+        {z0}] and can move only along the global z-axis (its x- and y-coordinates stay zero). The
+        link is pinned without friction to both sliders and keeps their distance at its starting
+        value L = sqrt({x0}^2 + {z0}^2) m. A massless linear spring-damper with stiffness k =
+        {stiffness} N/m and damping coefficient d = {damping} N*s/m joins the fixed point at the
+        origin [0, 0, 0] to slider 1; it acts along the line between its ends (force k times its
+        stretch plus d times the rate of change of its length) and is unstretched at the start
+        (unstretched length {x0} m). Both sliders start at rest. Gravity g = {gravity} m/s^2 acts
+        in the negative z-direction on both sliders.
+    """,
     params=(
         Param("mass1", 1.0, 5.0, "kg"),
         Param("mass2", 0.5, 2.0, "kg"),

@@ -29,6 +29,16 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction. Create the ground, the mass point
         and then the spring-damper.
     """,
+    open_description="""
+        A point mass on an elastic string in 3D: a point mass of m = {mass} kg is tied to a fixed
+        point at the origin [0, 0, 0] by a massless linear spring-damper with stiffness k =
+        {stiffness} N/m, damping coefficient d = {damping} N*s/m and unstretched length L =
+        {length} m; it pulls or pushes along the line between the fixed point and the point mass
+        with the force k times its stretch plus d times the rate of change of its length. Gravity
+        g = {gravity} m/s^2 acts in the negative z-direction. At the start the point mass is at
+        [{length}, 0, 0] (the spring horizontal along +x and unstretched) and moves with the
+        velocity [0, {vy}, {vz}] m/s, so that it whirls mainly about the vertical z-axis.
+    """,
     params=(
         Param("mass", 0.5, 2.0, "kg"),
         Param("length", 0.3, 0.8, "m"),

@@ -27,6 +27,15 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction. Create the ground, the mass point
         and then the distance constraint.
     """,
+    open_description="""
+        A spherical pendulum in 3D: a point mass of m = {mass} kg hangs on a massless rigid string
+        of length L = {length} m from a fixed point at the origin [0, 0, 0]; the string is pinned
+        without friction at both ends and keeps the distance between the fixed point and the point
+        mass at exactly L (it can take tension and compression, like a rigid rod). Gravity g =
+        {gravity} m/s^2 acts in the negative z-direction. At the start the point mass is at
+        [{length}, 0, 0] (the string horizontal along +x) and moves with the velocity [0, {vy},
+        {vz}] m/s, so that it whirls mainly about the vertical z-axis.
+    """,
     params=(
         Param("mass", 0.5, 3.0, "kg"),
         Param("length", 0.3, 1.0, "m"),

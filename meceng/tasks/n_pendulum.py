@@ -32,6 +32,18 @@ TASK = TaskModel(
         points in the order of their index, then the distance constraints in the order of the
         rods.
     """,
+    open_description="""
+        A chain pendulum in the x-y plane: n = {n_masses} identical point masses, each of mass
+        {mass} kg, numbered i = 1 to n from the top. Point mass 1 hangs from a fixed pivot at the
+        origin [0, 0, 0] on a massless rigid rod of length L = {length} m, and point mass i (i = 2
+        to n) hangs from point mass i-1 on another massless rigid rod of length L. The rods are
+        pinned at both ends without friction: each only keeps the distance between its two ends at
+        L. Gravity g = {gravity} m/s^2 acts in the negative y-direction on every point mass. At
+        the start all point masses are at rest and the chain is straight, turned {angle_deg}
+        degrees from hanging straight down towards positive x: point mass i is at the distance i*L
+        from the pivot along that line, at [i*L*sin(phi0), -i*L*cos(phi0), 0] with phi0 =
+        {angle_deg} degrees.
+    """,
     params=(
         Param("n_masses", 2, 6, "", integer=True),
         Param("mass", 0.2, 2.0, "kg"),

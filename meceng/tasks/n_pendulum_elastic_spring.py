@@ -31,6 +31,19 @@ TASK = TaskModel(
         y-direction on every mass point. Create the ground, then the mass points in the order of
         their index, then the spring-dampers in the order of their index.
     """,
+    open_description="""
+        A chain pendulum with elastic strings in the x-y plane: n = {n_masses} identical point
+        masses, each of mass {mass} kg, numbered i = 1 to n from the top. Point mass 1 hangs from
+        a fixed pivot at the origin [0, 0, 0] on a massless linear spring-damper, and point mass i
+        (i = 2 to n) hangs from point mass i-1 on another such spring-damper. All n spring-dampers
+        are equal: unstretched length L = {length} m, stiffness k = {stiffness} N/m and damping
+        coefficient d = {damping} N*s/m; each pulls or pushes along the line between its two ends
+        with the force k times its stretch plus d times the rate of change of its length. Gravity
+        g = {gravity} m/s^2 acts in the negative y-direction on every point mass. At the start all
+        point masses are at rest, every spring is unstretched and the chain is straight, turned
+        {angle_deg} degrees from hanging straight down towards positive x: point mass i is at
+        [i*L*sin(phi0), -i*L*cos(phi0), 0] with phi0 = {angle_deg} degrees.
+    """,
     params=(
         Param("n_masses", 2, 6, "", integer=True),
         Param("mass", 0.2, 1.0, "kg"),

@@ -35,6 +35,20 @@ TASK = TaskModel(
         zero initial angular velocity. There is no gravity, no ground object and no other load.
         Create body 1, then body 2, then the spring-damper.
     """,
+    open_description="""
+        Two identical free rigid bars flying in space, joined end to end by an elastic coupling;
+        there is no gravity and no other load. Each bar is a homogeneous brick (rectangular
+        cuboid) of density {density} kg/m^3 with edge lengths a = {size_x} m, b = {size_y} m and c
+        = {size_z} m, which at the start lie along the global x-, y- and z-axes. At the start the
+        centre of bar 1 is at [a/2, 0, 0] and the centre of bar 2 at [3*a/2, 0, 0], so the bars
+        lie end to end along the x-axis and touch at [a, 0, 0]. The coupling joins the centre of
+        bar 1's end face at +x to the centre of bar 2's end face at -x (both at [a, 0, 0] at the
+        start): it is a zero-length linear spring-damper that pulls these two points together with
+        the force k times their separation vector plus d times their relative velocity vector, the
+        same in every direction, with k = {stiffness} N/m and d = {damping} N*s/m; it is relaxed
+        at the start. Bar 1 starts with the velocity [0, {velocity}, 0] m/s and bar 2 with [0,
+        -{velocity}, 0] m/s; neither bar rotates at the start.
+    """,
     params=(
         Param("density", 1000.0, 2000.0, "kg/m^3"),
         Param("size_x", 0.4, 0.6, "m"),

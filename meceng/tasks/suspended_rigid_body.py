@@ -38,6 +38,24 @@ TASK = TaskModel(
         Gravity g = {gravity} m/s^2 acts in the negative y-direction. Create the ground, the body and
         then the four spring-dampers in the order of the corners.
     """,
+    open_description="""
+        A rigid brick suspended at its four upper corners by four elastic mounts to the fixed
+        world. The brick is a homogeneous rectangular cuboid of density {density} kg/m^3 with edge
+        lengths a = {size_x} m, b = {size_y} m and c = {size_z} m; at the start its centre is at
+        the origin [0, 0, 0] and its edges of length a, b and c lie along the global x-, y- and
+        z-axes (y is vertical). Its four upper corners are the ones at y = b/2, i.e. at [sx*a/2,
+        b/2, sz*c/2] with each of sx and sz either -1 or 1. Each of these corners is held by a
+        linear spring-damper to a fixed point at the corner's starting position; it acts
+        separately along the global x-, y- and z-directions: along each of these directions it
+        pulls the corner back towards its fixed point with the stiffness of that direction times
+        the corner's displacement from the fixed point along that direction, plus d times the
+        corner's velocity along that direction. The stiffness is {stiffness_h} N/m in the
+        horizontal x- and z-directions and {stiffness_v} N/m in the vertical y-direction, the
+        damping coefficient is d = {damping} N*s/m in all three directions, and all four mounts
+        are equal and relaxed at the start. The brick starts with the velocity of its centre
+        [{vel_x}, 0, {vel_z}] m/s and without rotation. Gravity g = {gravity} m/s^2 acts in the
+        negative y-direction.
+    """,
     params=(
         Param("density", 500.0, 2000.0, "kg/m^3"),
         Param("size_x", 0.4, 0.8, "m"),

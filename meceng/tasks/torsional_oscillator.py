@@ -32,6 +32,19 @@ TASK = TaskModel(
         Gravity is neglected. Create the ground, the disc, the revolute joint, the torsional
         spring-damper and then the torque.
     """,
+    open_description="""
+        A torsional oscillator: a disc turning on a frictionless hinge against a torsional spring.
+        The disc is a homogeneous solid cylinder of mass m = {mass} kg, radius r = {radius} m and
+        thickness w = {width} m. Its centre is at the origin [0, 0, 0] and its axis of symmetry
+        lies along the global z-axis, which is also the hinge axis: the centre stays fixed and the
+        disc can only turn about the z-axis. A linear torsional spring-damper between the fixed
+        world and the disc acts about the z-axis with stiffness k = {stiffness} N*m/rad and
+        damping coefficient d = {damping} N*m*s/rad; it is relaxed at the starting angle. A
+        constant torque of {torque} N*m about the positive z-axis acts on the disc. Gravity is
+        neglected. At the start the disc is at the relaxed angle and turns with the angular
+        velocity {omega0} rad/s about the positive z-axis (angular velocity vector [0, 0,
+        {omega0}] rad/s).
+    """,
     params=(
         Param("mass", 5.0, 20.0, "kg"),
         Param("radius", 0.15, 0.3, "m"),
