@@ -34,7 +34,7 @@ TASK = TaskModel(
         disc and then the rolling disc joint.
     """,
     open_description="""
-        A homogeneous thin disc (a short solid cylinder) of density {density} kg/m^3, radius
+        A homogeneous disc (a short solid cylinder) of density {density} kg/m^3, radius
         r = {radius} m and thickness {width} m rolls upright on the flat horizontal ground z = 0.
         The disc rolls without slipping: its contact point with the ground has no velocity in any
         direction (neither sliding along nor sideways), and it stays in contact with the ground

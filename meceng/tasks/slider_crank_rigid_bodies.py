@@ -58,8 +58,9 @@ TASK = TaskModel(
         does not rotate. At the start the crank points from O at the angle
         theta0 = {crank_angle_deg} degrees, measured counter-clockwise from the positive x-axis, so
         B = [r*cos(theta0), r*sin(theta0), 0]; C is the point on the x-axis at distance l from B
-        on the positive side, C = [r*cos(theta0) + sqrt(l^2 - r^2*sin(theta0)^2), 0, 0]; each bar spans
-        the straight segment between its two joint points (crank from O to B, rod from B to C).
+        to the right of B (larger x), C = [r*cos(theta0) + sqrt(l^2 - r^2*sin(theta0)^2), 0, 0];
+        each bar spans the straight segment between its two joint points (crank from O to B, rod
+        from B to C).
         All bodies start from rest. A constant torque of {torque} N*m about the global +z axis
         (counter-clockwise) drives the crank, and gravity g = {gravity} m/s^2 acts in the negative
         y-direction on all three bodies. There is no friction and no damping.
