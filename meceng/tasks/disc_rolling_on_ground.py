@@ -33,6 +33,20 @@ TASK = TaskModel(
         and the ground plane through [0, 0, 0] with the normal [0, 0, 1]. Create the ground, the
         disc and then the rolling disc joint.
     """,
+    open_description="""
+        A homogeneous disc (a short solid cylinder) of density {density} kg/m^3, radius
+        r = {radius} m and thickness {width} m rolls upright on the flat horizontal ground z = 0.
+        The disc rolls without slipping: its contact point with the ground has no velocity in any
+        direction (neither sliding along nor sideways), and it stays in contact with the ground
+        (it never lifts off). The disc's centre starts at [{x0}, {y0}, r], with its symmetry axis
+        (axle direction) horizontal along a = [cos(psi), sin(psi), 0], where the heading angle
+        psi = {heading_deg} degrees is measured counter-clockwise from the positive x-axis about
+        the vertical. At the start the disc rolls in the horizontal direction
+        d = [-sin(psi), cos(psi), 0] with the speed v = {velocity} m/s: its centre moves with the
+        velocity v*d and its angular velocity is -(v/r)*a, consistent with rolling without
+        slipping. Gravity g = {gravity} m/s^2 acts in the negative z-direction; there is no rolling
+        resistance and no other force.
+    """,
     params=(
         Param("density", 1000.0, 8000.0, "kg/m^3"),
         Param("radius", 0.1, 0.4, "m"),

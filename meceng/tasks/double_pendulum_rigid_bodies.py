@@ -36,6 +36,19 @@ TASK = TaskModel(
         y-direction on both links; no other forces and no damping. Create the ground, link 1,
         link 2, revolute joint 1 and then revolute joint 2.
     """,
+    open_description="""
+        A planar double pendulum of two rigid bars swinging in the x-y plane. Both bars are
+        homogeneous with density {density} kg/m^3 and a rectangular cross-section: bar 1 has length
+        L1 = {length1} m, bar 2 length L2 = {length2} m, both have width {width} m (in the x-y
+        plane, across the bar) and thickness {thickness} m (along the global z-axis). Bar 1 is
+        pinned at one end to the fixed world at the origin [0, 0, 0] by a frictionless hinge whose
+        axis is the global z-axis; bar 2 is pinned by a second frictionless hinge, also about the
+        z-axis, to the free end of bar 1, and its own other end is free. At the start both bars lie
+        on one straight line that runs from the origin downwards to the right, at the angle
+        {angle_deg} degrees below the positive x-axis (towards +x and -y): bar 1 spans the first L1
+        of that line, bar 2 the next L2. Both bars start from rest. Gravity g = {gravity} m/s^2
+        acts in the negative y-direction; there is no damping and no other force.
+    """,
     params=(
         Param("density", 500.0, 8000.0, "kg/m^3"),
         Param("length1", 0.3, 1.0, "m"),

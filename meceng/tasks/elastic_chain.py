@@ -34,6 +34,18 @@ TASK = TaskModel(
         points. Create the ground, then the mass points in the order of their index, then the
         spring-dampers in the order from A to B.
     """,
+    open_description="""
+        An elastic chain of n = {n_masses} equal point masses, each of mass {mass} kg, hanging
+        between two fixed points A = [0, 0, 0] and B = [{span}, 0, 0], L = {span} m apart. At the
+        start the point masses lie evenly spaced on the straight line from A to B, at
+        [i*h, 0, 0] for i = 1 to n, with the spacing h = L/(n + 1). Neighbours along the chain are
+        joined by n + 1 identical massless linear spring-dampers acting along the line between
+        their two ends: A with mass 1, mass i with mass i + 1, and mass n with B. Each has
+        stiffness k = {stiffness} N/m, damping coefficient d = {damping} N*s/m (force proportional
+        to the rate of change of its length) and the unstretched length {length_ratio}*h, shorter
+        than the spacing, so the straight chain starts pretensioned. All masses start from rest.
+        Gravity g = {gravity} m/s^2 acts in the negative y-direction; there is no other force.
+    """,
     params=(
         Param("n_masses", 3, 8, integer=True),
         Param("span", 1.0, 3.0, "m"),

@@ -44,6 +44,21 @@ TASK = TaskModel(
         distance constraints of the crank, the coupler and the rocker, then the coordinate
         constraints of B and C.
     """,
+    open_description="""
+        A planar four-bar linkage in the x-y plane with its mass lumped in two point masses. The
+        fixed pivots are A = [0, 0, 0] (crank pivot) and D = [{ground_length}, 0, 0] (rocker
+        pivot). A massless rigid crank of length a = {crank_length} m joins A to point mass B
+        (m_B = {mass_b} kg), a massless rigid coupler of length b = {coupler_length} m joins B to
+        point mass C (m_C = {mass_c} kg), and a massless rigid rocker of length
+        c = {rocker_length} m joins C to D. The rods carry force only along their length (ideal
+        frictionless pins at both ends), and both point masses are held in the plane z = 0. At the
+        start the crank points from A at the angle {crank_angle_deg} degrees measured
+        counter-clockwise from the positive x-axis, so B = [a*cos(theta0), a*sin(theta0), 0] with
+        theta0 = {crank_angle_deg} degrees; C is the point at distance b from B and c from D that
+        lies on the left-hand side of the line from B towards D (above that line). Both masses
+        start from rest. Gravity g = {gravity} m/s^2 acts in the negative y-direction; there is no
+        friction and no damping.
+    """,
     params=(
         Param("ground_length", 0.4, 0.5, "m"),
         Param("crank_length", 0.08, 0.15, "m"),

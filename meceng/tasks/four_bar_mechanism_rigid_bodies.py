@@ -53,6 +53,23 @@ TASK = TaskModel(
         y-direction on all three bodies. No drive, friction or damping. Create the ground, the crank,
         the coupler and the rocker, then the joints in the order given.
     """,
+    open_description="""
+        A planar four-bar linkage moving in the x-y plane, made of three homogeneous rigid bars of
+        density {density} kg/m^3 with a square cross-section of side w = {width} m: a crank of
+        length a = {crank_length} m, a coupler of length b = {coupler_length} m and a rocker of
+        length c = {rocker_length} m. The fixed pivots are A = [0, 0, 0] and
+        D = [{ground_length}, 0, 0]. The crank is pinned at one end to the fixed world at A, the
+        rocker at one end to the fixed world at D; the crank's other end is pinned to one end of
+        the coupler at B, and the coupler's other end to the rocker's free end at C. All four pins
+        are frictionless hinges about the global z-axis. At the start the crank points from A at
+        the angle theta0 = {crank_angle_deg} degrees, measured counter-clockwise from the positive
+        x-axis, so B = [a*cos(theta0), a*sin(theta0), 0]; C is the point at distance b from B and
+        c from D that lies on the left-hand side of the line from B towards D (above that line).
+        Each bar spans the straight segment between its two joint points (crank from A to B,
+        coupler from B to C, rocker from D to C). All bodies start from rest. Gravity
+        g = {gravity} m/s^2 acts in the negative y-direction on all three bars; there is no drive,
+        no friction and no damping.
+    """,
     params=(
         Param("density", 2000.0, 8000.0, "kg/m^3"),
         Param("ground_length", 0.4, 0.5, "m"),

@@ -36,6 +36,19 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction. No friction. Create the ground, the
         disc and then the spherical joint.
     """,
+    open_description="""
+        A gyroscope (heavy symmetric top): a homogeneous disc of density {density} kg/m^3, radius
+        R = {disc_radius} m and thickness {thickness} m, fixed on a massless rigid axle that lies
+        along the disc's symmetry axis. The free end of the axle is held at the fixed point
+        O = [0, 0, 0] by a frictionless ball joint (the point is fixed, every rotation is free); the
+        disc's centre is on the axle at the distance l = {axle_length} m from O. At the start the
+        axle lies in the x-z plane, pointing from O towards +x and raised by the angle
+        {elevation_deg} degrees above the horizontal, along u = [cos(alpha), 0, sin(alpha)] with
+        alpha = {elevation_deg} degrees; the disc's centre is at l*u. The disc's centre starts at
+        rest and the disc spins about its own axis with the angular velocity {spin}*u rad/s (that
+        is {spin} rad/s about u, no initial precession). Gravity g = {gravity} m/s^2 acts in the
+        negative z-direction; there is no friction.
+    """,
     params=(
         Param("density", 2000.0, 8000.0, "kg/m^3"),
         Param("disc_radius", 0.06, 0.1, "m"),

@@ -29,6 +29,16 @@ TASK = TaskModel(
         acts in the negative y-direction. Create the ground, the block, the prismatic joint and then
         the force.
     """,
+    open_description="""
+        A rigid block sliding on a frictionless straight vertical guide. The block is a homogeneous
+        cuboid of mass m = {mass} kg with edge lengths {size_x} m, {size_y} m and {size_z} m along
+        the global x-, y- and z-directions; its centre of mass starts at the origin [0, 0, 0] with
+        its edges parallel to the global axes. The guide lets the block translate only along the
+        global y-axis; it cannot move sideways and cannot rotate. A constant force
+        [{force_x}, {force_y}, 0] N (fixed in direction) acts at the block's centre of mass, and
+        gravity g = {gravity} m/s^2 acts in the negative y-direction. At the start the block moves
+        with the velocity [0, {vel_y}, 0] m/s and does not rotate.
+    """,
     params=(
         Param("mass", 1.0, 20.0, "kg"),
         Param("size_x", 0.1, 0.8, "m"),

@@ -38,6 +38,24 @@ TASK = TaskModel(
         g = {gravity} m/s^2 acts in the negative z-direction on the rotor (including the unbalance).
         No friction. Create the ground, the rotor, bearing A, bearing B and then the torque.
     """,
+    open_description="""
+        A rigid rotor with an unbalance on two bearings. The rotor is a homogeneous solid cylinder
+        of density {density} kg/m^3, length L = {length} m and radius r = {radius} m, whose axis
+        lies along the global x-axis with the cylinder's centre at the origin [0, 0, 0]; its end
+        faces are at x = -L/2 and x = L/2. An unbalance mass m_u = {unbalance_mass} kg, taken as a
+        point mass, is rigidly fixed to the rotor's surface in the middle of its length; at the
+        start it sits at the top, at [0, 0, r]. Cylinder and unbalance form one rigid body, whose
+        centre of mass is therefore slightly off the axis towards the unbalance. The rotor is held
+        by two frictionless bearings at the centres of its end faces: bearing A at [-L/2, 0, 0] is
+        a fixed bearing that holds that point in all three directions but lets the rotor turn
+        freely about any axis through it; bearing B at [L/2, 0, 0] is a floating bearing that holds
+        that point only in the global y- and z-directions (free to slide along x and to turn).
+        Together they leave the rotor free only to turn about its geometric axis (the x-axis). A
+        constant torque of {torque} N*m about the global +x axis drives the rotor, and gravity
+        g = {gravity} m/s^2 acts in the negative z-direction on the cylinder and the unbalance. At
+        the start the axis is at rest and the rotor spins about the +x axis with the angular
+        velocity {omega0} rad/s.
+    """,
     params=(
         Param("density", 7000.0, 8000.0, "kg/m^3"),
         Param("length", 0.2, 0.4, "m"),

@@ -45,6 +45,26 @@ TASK = TaskModel(
         damping. Create the ground, the crank, the rod and the slider, then the joints in the order
         given, then the torque.
     """,
+    open_description="""
+        A slider-crank mechanism moving in the x-y plane, made of three homogeneous rigid bodies of
+        density {density} kg/m^3: a crank, a connecting rod and a slider. The crank is a bar of
+        length r = {crank_length} m and the connecting rod a bar of length l = {rod_length} m, both
+        with a square cross-section of side w = {width} m; the slider is a cube of side
+        s = {slider_size} m. The crank is pinned at one end to the fixed world at O = [0, 0, 0] by
+        a frictionless hinge about the global z-axis. Its other end, the crank pin B, is joined to
+        one end of the connecting rod by a frictionless hinge about the z-axis; the rod's other end
+        is pinned, also frictionlessly about the z-axis, to the centre C of the slider. The slider
+        is guided without friction along the global x-axis: its centre stays on the x-axis and it
+        does not rotate. At the start the crank points from O at the angle
+        theta0 = {crank_angle_deg} degrees, measured counter-clockwise from the positive x-axis, so
+        B = [r*cos(theta0), r*sin(theta0), 0]; C is the point on the x-axis at distance l from B
+        to the right of B (larger x), C = [r*cos(theta0) + sqrt(l^2 - r^2*sin(theta0)^2), 0, 0];
+        each bar spans the straight segment between its two joint points (crank from O to B, rod
+        from B to C).
+        All bodies start from rest. A constant torque of {torque} N*m about the global +z axis
+        (counter-clockwise) drives the crank, and gravity g = {gravity} m/s^2 acts in the negative
+        y-direction on all three bodies. There is no friction and no damping.
+    """,
     params=(
         Param("density", 2000.0, 8000.0, "kg/m^3"),
         Param("crank_length", 0.1, 0.25, "m"),

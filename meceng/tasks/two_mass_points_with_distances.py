@@ -26,6 +26,14 @@ TASK = TaskModel(
         The system is attached to nothing (no ground object is needed); there is no gravity and no
         other force. Create mass point 1, mass point 2 and then the distance constraint.
     """,
+    open_description="""
+        A dumbbell floating freely in space: two point masses joined by a massless rigid rod that
+        keeps their distance constant at 2*{half_distance} m. Point mass 1, m1 = {mass1} kg, starts
+        at [-{half_distance}, 0, 0] m with the velocity [0, {velocity1}, 0] m/s; point mass 2,
+        m2 = {mass2} kg, starts at [{half_distance}, 0, 0] m with the velocity
+        [0, -{velocity2}, 0] m/s. The rod carries force only along its length. The dumbbell is not
+        attached to anything; there is no gravity and no other force.
+    """,
     params=(
         Param("mass1", 0.5, 2.0, "kg"),
         Param("mass2", 0.5, 2.0, "kg"),

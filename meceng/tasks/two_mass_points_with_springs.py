@@ -29,6 +29,16 @@ TASK = TaskModel(
         is no gravity and no other force. Create mass point 1, mass point 2 and then the
         spring-damper.
     """,
+    open_description="""
+        Two point masses, free in space, joined by a massless linear spring-damper. Point mass 1,
+        m1 = {mass1} kg, starts at [-{half_distance}, 0, 0] m with the velocity [0, {velocity1}, 0]
+        m/s; point mass 2, m2 = {mass2} kg, starts at [{half_distance}, 0, 0] m with the velocity
+        [0, -{velocity2}, 0] m/s. The spring-damper acts along the line between the two masses,
+        with stiffness k = {stiffness} N/m, damping coefficient d = {damping} N*s/m (force
+        proportional to the rate of change of the distance) and unstretched length equal to the
+        initial distance 2*{half_distance} m, so it is relaxed at the start. Nothing else acts: the
+        pair is not attached to anything, there is no gravity and no other force.
+    """,
     params=(
         Param("mass1", 0.5, 2.0, "kg"),
         Param("mass2", 0.5, 2.0, "kg"),
