@@ -33,6 +33,20 @@ TASK = TaskModel(
         the order of their index, then the contacts for the pairs (0, 1), (0, 2), (0, 3), (1, 2),
         (1, 3), (2, 3) in this order, with the lower index as the first item.
     """,
+    open_description="""
+        A billiard break with 4 equal balls (index 0 to 3), each of mass m = {mass} kg and radius
+        r = {radius} m, treated as point masses (no rotation) that slide without friction in the
+        horizontal plane z = 0; gravity is balanced by the table and left out, so nothing acts on
+        the balls but their contacts. Cue ball 0 starts at [0, {offset}, 0] m with the velocity
+        [{velocity}, 0, 0] m/s. The other three balls are at rest in a triangle: with the centre
+        distance s = 2*r + {gap} m (a gap of {gap} m between neighbouring balls), ball 1 is at
+        [{distance}, 0, 0] m, ball 2 at [{distance} + s*sqrt(3)/2, s/2, 0] m and ball 3 at
+        [{distance} + s*sqrt(3)/2, -s/2, 0] m. Any two balls can collide; each contact is a penalty
+        contact: while the two balls overlap, a linear spring of stiffness k = {stiffness} N/m acts
+        on the overlap along the line of centres, with no viscous damping, plus the hysteresis
+        damping of Gonthier et al. / Carvalho-Martins that gives the coefficient of restitution
+        e = {restitution}; no friction.
+    """,
     params=(
         Param("mass", 0.1, 0.3, "kg"),
         Param("radius", 0.025, 0.04, "m"),

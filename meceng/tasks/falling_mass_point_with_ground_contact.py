@@ -33,6 +33,18 @@ TASK = TaskModel(
         coefficient e = {restitution}. Friction is neglected. Create the ground, the mass point and
         then the contact.
     """,
+    open_description="""
+        A ball of mass m = {mass} kg and radius r = {radius} m, treated as a point mass (no
+        rotation) at its centre, is thrown horizontally and bounces on the ground. Gravity
+        g = {gravity} m/s^2 acts in the negative z-direction. The ball's centre starts at
+        [0, 0, {height}] m with the velocity [{velocity}, 0, 0] m/s. The ground is the plane z = 0,
+        represented as the surface of a fixed sphere of radius 1000 m whose centre is at
+        [0, 0, -1000] m (its top touches the plane z = 0 at the origin). The ground contact is a
+        penalty contact: while the ball and the ground sphere overlap, a linear spring of stiffness
+        k = {stiffness} N/m acts on the overlap along the line of centres, with no viscous damping,
+        plus the hysteresis damping of Gonthier et al. / Carvalho-Martins that gives the coefficient
+        of restitution e = {restitution}; no friction.
+    """,
     params=(
         Param("mass", 0.1, 1.0, "kg"),
         Param("radius", 0.02, 0.1, "m"),

@@ -44,6 +44,26 @@ TASK = TaskModel(
         neglected. Create the ground, the net mass points, the springs, the sphere and then the
         contacts.
     """,
+    open_description="""
+        A large ball falls into a horizontal, pre-tensioned net. The net is a square grid of points
+        P(i, j) = [i*a, j*a, 0] with spacing a = {spacing} m and i, j = 0, ..., n+1, n = {n}. The
+        points with i or j equal to 0 or n+1 form a fixed square frame; the n x n inner points (i,
+        j = 1, ..., n) are point masses m = {node_mass} kg. Every pair of neighbouring grid points,
+        P(i, j) - P(i+1, j) and P(i, j) - P(i, j+1), is connected by a massless linear spring,
+        stiffness k = {spring_stiffness} N/m, no damping, unstretched length
+        L0 = (1 - {prestrain})*a, so the flat net is under tension; two frame points are not
+        connected. The ball is a point mass M = {sphere_mass} kg (no rotation) with the contact
+        radius R = {sphere_radius} m; its centre starts at [c, c, R + 0.05] m with c = (n+1)*a/2,
+        i.e. above the centre of the net, with the velocity [0, 0, -{velocity}] m/s. The net nodes
+        start at rest at their grid positions. Gravity g = 9.81 m/s^2 acts in the negative
+        z-direction on the ball and on all net masses. The ball touches the net only at its inner
+        nodes, each of which is a small sphere of radius 0.01 m for this purpose (the springs
+        themselves have no contact); every ball-node contact is a penalty contact: while the two
+        spheres overlap, a linear spring of stiffness k_c = {contact_stiffness} N/m acts on the
+        overlap along the line of centres, with no viscous damping, plus the hysteresis damping of
+        Gonthier et al. / Carvalho-Martins that gives the coefficient of restitution
+        e = {restitution}; no friction.
+    """,
     params=(
         Param("n", 3, 5, integer=True),
         Param("spacing", 0.1, 0.2, "m"),

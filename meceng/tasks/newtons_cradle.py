@@ -40,6 +40,20 @@ TASK = TaskModel(
         neglected. Add the spheres in the order of their index, then the distance constraints in
         the same order, then the contacts.
     """,
+    open_description="""
+        A Newton's cradle of 4 identical balls (index 0 to 3), each of mass m = {mass} kg and radius
+        r = {radius} m, treated as point masses (no rotation) at their centres. Ball i hangs from
+        the fixed suspension point [i*(2*{radius}+0.002), 0, {length}] m on a massless rigid rod of
+        length L = {length} m, pinned without friction at both ends, so that the balls hang in a row
+        along the x-axis with a gap of 0.002 m between neighbours. Gravity g = {gravity} m/s^2 acts
+        in the negative z-direction. Balls 1, 2 and 3 start at rest hanging straight down, their
+        centres at [i*(2*{radius}+0.002), 0, 0]. Ball 0 starts at rest lifted sideways until its rod
+        is horizontal, its centre at [-{length}, 0, {length}] m. Each pair of neighbouring balls
+        (0-1, 1-2, 2-3) can collide; each such contact is a penalty contact: while the two balls
+        overlap, a linear spring of stiffness k = {stiffness} N/m acts on the overlap along the line
+        of centres, with no viscous damping, plus the hysteresis damping of Gonthier et al. /
+        Carvalho-Martins that gives the coefficient of restitution e = {restitution}; no friction.
+    """,
     params=(
         Param("mass", 0.05, 0.5, "kg"),
         Param("radius", 0.02, 0.05, "m"),

@@ -52,6 +52,28 @@ TASK = TaskModel(
         revolute joints and the rolling disc joints (each in the same wheel order), then the torques
         on the rear-left and the rear-right wheel.
     """,
+    open_description="""
+        A non-steerable four-wheeled car rolls straight ahead along the x-axis on the horizontal
+        ground plane z = 0; gravity g = {gravity} m/s^2 acts in the negative z-direction. It has
+        five rigid bodies: a chassis and four wheels. The chassis is a homogeneous box of density
+        {chassis_density} kg/m^3 with the side lengths L = {wheelbase} m along x, B = {track} m
+        along y and h = {chassis_height} m along z; its centre is at [0, 0, r], where
+        r = {wheel_radius} m is the wheel radius, L is also the wheelbase and B the track width. The
+        wheel centres are: front-left [L/2, B/2, r], front-right [L/2, -B/2, r], rear-left
+        [-L/2, B/2, r] and rear-right [-L/2, -B/2, r]. Each wheel is a homogeneous solid disc of
+        density {wheel_density} kg/m^3, radius r and width w = {wheel_width} m, with its axle along
+        the global y-axis, and turns on the chassis in a frictionless hinge at its centre whose axis
+        is the wheel's axle. Each wheel rolls ideally on the ground: at its contact point it slips
+        neither in the rolling direction nor sideways, and its rim stays on the ground (it neither
+        lifts off nor sinks in). (For a rigid chassis on four such wheels these conditions are
+        partly redundant: the two wheels of an axle share their sideways condition, and four ground
+        contacts hold a chassis that has only three degrees of freedom in height, roll and pitch.)
+        Initially the car moves at v0 = {velocity} m/s in the positive x-direction: all five bodies
+        have the velocity [v0, 0, 0], the chassis does not rotate, and all wheels spin with the
+        angular velocity [0, v0/r, 0] (rolling without slipping). Each rear wheel is driven by a
+        constant torque of {torque} N*m about the positive y-axis; it acts on that wheel alone (its
+        reaction on the chassis is left out).
+    """,
     params=(
         Param("wheelbase", 1.5, 3.0, "m"),
         Param("track", 1.0, 1.6, "m"),

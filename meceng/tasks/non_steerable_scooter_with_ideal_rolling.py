@@ -44,6 +44,24 @@ TASK = TaskModel(
         neglected). Create the ground, the frame, the front wheel, the rear wheel, then the
         revolute joints (front, rear), the rolling disc joints (front, rear) and the torque.
     """,
+    open_description="""
+        A non-steerable scooter rolls straight ahead along the x-axis on the horizontal ground plane
+        z = 0; gravity g = {gravity} m/s^2 acts in the negative z-direction. It has three rigid
+        bodies: a frame and two wheels. The frame is a homogeneous box of density {frame_density}
+        kg/m^3 with the side lengths L = {wheelbase} m along x, b = {frame_width} m along y and
+        h = {frame_height} m along z; its centre is at [0, 0, r], where r = {wheel_radius} m is the
+        wheel radius (L is also the wheelbase). The front wheel's centre is at [L/2, 0, r], the rear
+        wheel's at [-L/2, 0, r]; each wheel is a homogeneous solid disc of density {wheel_density}
+        kg/m^3, radius r and width w = {wheel_width} m, with its axle along the global y-axis. Each
+        wheel turns on the frame in a frictionless hinge at its centre whose axis is the wheel's
+        axle. Each wheel rolls ideally on the ground: at its contact point it slips neither in the
+        rolling direction nor sideways, and its rim stays on the ground (it neither lifts off nor
+        sinks in). Initially the scooter moves at v0 = {velocity} m/s in the positive x-direction:
+        all three bodies have the velocity [v0, 0, 0], the frame does not rotate, and both wheels
+        spin with the angular velocity [0, v0/r, 0] (rolling without slipping). A constant torque of
+        {torque} N*m about the positive y-axis drives the rear wheel; it acts on the rear wheel
+        alone (its reaction on the frame is left out).
+    """,
     params=(
         Param("wheelbase", 0.5, 1.0, "m"),
         Param("frame_width", 0.1, 0.2, "m"),

@@ -40,6 +40,20 @@ TASK = TaskModel(
         B_1 to B_n, then T_1 to T_n, then the members (for each panel its bottom chord, top chord
         and diagonal, then the verticals), then the force.
     """,
+    open_description="""
+        A planar cantilever truss with parallel chords in the x-y plane, built into a wall at its
+        left end. It has n = {n_panels} panels of length a = {panel_length} m and height
+        h = {height} m. Its nodes are the bottom chord nodes B_i = [i*a, 0, 0] and the top chord
+        nodes T_i = [i*a, h, 0], i = 0 to n. The two wall nodes B_0 and T_0 are fixed points of the
+        wall (no mass, they do not move); every other node is a point mass m = {node_mass} kg. The
+        members are massless linear spring-dampers, axial stiffness k = {stiffness} N/m and axial
+        damping d = {damping} N*s/m, each unstretched at the node positions given above: in every
+        panel i = 0 to n - 1 the bottom chord B_i-B_(i+1), the top chord T_i-T_(i+1) and the
+        diagonal B_i-T_(i+1), and the verticals B_i-T_i for i = 1 to n (no vertical at the wall).
+        All nodes start at rest at these positions. At t = 0 the loads are applied suddenly and stay
+        constant: gravity g = {gravity} m/s^2 in the negative y-direction on every point mass, and a
+        force of {force} N in the negative y-direction at the tip node B_n.
+    """,
     params=(
         Param("n_panels", 2, 6, integer=True),
         Param("panel_length", 0.4, 0.8, "m"),

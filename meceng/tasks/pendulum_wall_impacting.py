@@ -36,6 +36,21 @@ TASK = TaskModel(
         2 and a restitution coefficient e = {restitution}; friction is neglected. Create the ground,
         the sphere, the distance constraint and then the contact.
     """,
+    open_description="""
+        A pendulum swinging in the x-z plane strikes a vertical wall. The bob is a homogeneous solid
+        sphere (a rigid body with mass and rotational inertia) of mass m = {mass} kg and radius
+        r = {radius} m. Its centre is held at the distance L = {length} m from the fixed pivot
+        [0, 0, 0] by a massless rigid rod, frictionless at both ends (the bob is free to turn about
+        its centre). Gravity g = {gravity} m/s^2 acts in the negative z-direction. At the start the
+        rod is turned {angle_deg} degrees from hanging straight down, towards negative x, in the x-z
+        plane (the bob's centre at x < 0, z < 0), and the bob is at rest, without rotation. The wall
+        is the fixed vertical plane x = r, which the bob just touches when it hangs straight down (a
+        flat triangle with the corners [r, -L, -2*L], [r, L, -2*L] and [r, 0, 0], which covers where
+        the bob touches it). The impact of bob and wall is a penalty contact: while the bob and the
+        wall overlap, a linear spring of stiffness k = {stiffness} N/m acts on the overlap normal to
+        the contact surface, with no viscous damping, plus the hysteresis damping of Gonthier et al.
+        / Carvalho-Martins that gives the coefficient of restitution e = {restitution}; no friction.
+    """,
     params=(
         Param("mass", 0.1, 1.0, "kg"),
         Param("radius", 0.02, 0.05, "m"),

@@ -54,6 +54,24 @@ TASK = TaskModel(
         B_n, then T_1 to T_(n-1), then the members in the order given, then the support constraints
         (B_0 x, B_0 y, B_n y), then the force.
     """,
+    open_description="""
+        A planar Pratt truss bridge in the x-y plane, simply supported, with
+        n = 2*{half_panels} = {n_panels} panels of length a = {panel_length} m and height
+        h = {height} m. The bottom chord nodes are B_i = [i*a, 0, 0] for i = 0 to n, the top chord
+        nodes T_i = [i*a, h, 0] for i = 1 to n - 1 (the end posts are inclined: there are no top
+        nodes above B_0 and B_n). Every node, the two support nodes included, is a point mass
+        m = {node_mass} kg. The members are massless linear spring-dampers, axial stiffness
+        k = {stiffness} N/m and axial damping d = {damping} N*s/m, each unstretched at the node
+        positions given above: the bottom chord B_i-B_(i+1) for i = 0 to n - 1; the top chord
+        T_i-T_(i+1) for i = 1 to n - 2; the end posts B_0-T_1 and T_(n-1)-B_n; the verticals B_i-T_i
+        for i = 1 to n - 1; and the diagonals, which slope down towards mid-span: T_i-B_(i+1) for
+        i = 1 to n/2 - 1 and T_i-B_(i-1) for i = n/2 + 1 to n - 1. Supports: B_0 is a pin, its x-
+        and y-coordinates are held at their initial values; B_n is a roller, only its y-coordinate
+        is held. Nothing else restrains the nodes (no force acts out of the plane). All nodes start
+        at rest at these positions. At t = 0 the loads are applied suddenly and stay constant:
+        gravity g = {gravity} m/s^2 in the negative y-direction on every node mass, and a force of
+        {force} N in the negative y-direction at the bottom node B_1.
+    """,
     params=(
         Param("half_panels", 2, 4, integer=True),
         Param("panel_length", 0.5, 1.0, "m"),

@@ -49,6 +49,31 @@ TASK = TaskModel(
         Create the ground, links 1 to 3, the revolute joints 1 to 3, then the torsional
         spring-dampers of joints 1 to 3.
     """,
+    open_description="""
+        An articulated robot arm with three revolute joints (RRR). Its three links are homogeneous
+        straight bars of density {density} kg/m^3 with a square cross-section of 0.05 m by 0.05 m.
+        In the start pose (all joint angles zero) link 1, a vertical column of length L1 = {length1}
+        m, stands from [0, 0, 0] to [0, 0, L1]; link 2 (upper arm), of length L2 = {length2} m,
+        points horizontally from [0, 0, L1] to [L2, 0, L1]; link 3 (forearm), of length
+        L3 = {length3} m, continues from [L2, 0, L1] to [L2 + L3, 0, L1]. The joints are
+        frictionless hinges: joint 1 (base) connects link 1 to the fixed world at [0, 0, 0] with the
+        vertical axis [0, 0, 1]; joint 2 (shoulder) connects link 1 and link 2 at [0, 0, L1], and
+        joint 3 (elbow) connects link 2 and link 3 at [L2, 0, L1], both with the axis [0, -1, 0] in
+        the start pose (these two axes turn with the column). The joint angle q1 is the rotation of
+        link 1 relative to the ground about [0, 0, 1]; q2 is the rotation of link 2 relative to link
+        1 and q3 that of link 3 relative to link 2, both about their joint axis [0, -1, 0], so that
+        a positive angle raises the arm. Gravity g = 9.81 m/s^2 acts in the negative z-direction on
+        all links. The arm starts at rest in the start pose. Each joint angle is to follow a cubic
+        trajectory from 0 to its end angle q_ie: q_i,d(t) = q_ie*(3*s^2 - 2*s^3) with the rate
+        q_i,d'(t) = q_ie*6*(s - s^2)/T, s = t/T, for t < T, and q_i,d = q_ie, q_i,d' = 0 for t >= T,
+        with q1e = {q1_end_deg} degrees, q2e = {q2_end_deg} degrees, q3e = {q3_end_deg} degrees and
+        the motion time T = {duration} s. A motor in each joint applies the PD control torque
+        tau_i = k_P*(q_i,d - q_i) + k_D*(q_i,d' - q_i') (angles in radians) with k_P = {kp} N*m/rad
+        and k_D = {kd} N*m*s/rad, q_i and q_i' being the actual joint angle and rate: tau_i acts
+        about the joint axis, in the sense of a positive q_i, on the outer link and, as reaction,
+        oppositely on the inner link (on the fixed world for joint 1). There is no gravity
+        compensation and no other load.
+    """,
     params=(
         Param("density", 2000.0, 3000.0, "kg/m^3"),
         Param("length1", 0.3, 0.5, "m"),

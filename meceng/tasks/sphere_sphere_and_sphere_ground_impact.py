@@ -36,6 +36,21 @@ TASK = TaskModel(
         sphere 1 and the ground, and a sphere-sphere contact between sphere 0 and sphere 1 (in this
         order).
     """,
+    open_description="""
+        Two balls, one above the other, are dropped onto a floor. Both are homogeneous solid spheres
+        (rigid bodies with mass and rotational inertia). The lower ball 0 has mass m0 = {mass0} kg
+        and radius r0 = {radius0} m; its centre starts at [0, 0, {height}] m. The upper ball 1 has
+        mass m1 = {mass1} kg and radius r1 = {radius1} m; its centre starts at
+        [{offset}, 0, {height} + r0 + r1 + {gap}] m, i.e. with a gap of {gap} m between the balls
+        and offset sideways by {offset} m along x. Both start at rest, without rotation. Gravity
+        g = {gravity} m/s^2 acts in the negative z-direction. The floor is the fixed plane z = 0 (a
+        flat triangle with the corners [-1, -1, 0], [2, -1, 0] and [-1, 2, 0], which covers
+        everywhere the balls touch it). Each ball can hit the floor, and the balls can hit each
+        other; every one of these contacts is a penalty contact: while the two surfaces overlap, a
+        linear spring of stiffness k = {stiffness} N/m acts on the overlap normal to the contact
+        surface, with no viscous damping, plus the hysteresis damping of Gonthier et al. /
+        Carvalho-Martins that gives the coefficient of restitution e = {restitution}; no friction.
+    """,
     params=(
         Param("mass0", 0.2, 0.6, "kg"),
         Param("radius0", 0.05, 0.08, "m"),

@@ -30,6 +30,17 @@ TASK = TaskModel(
         additional contact damping, the impact model 2 and a restitution coefficient
         e = {restitution}. Create sphere 0, then sphere 1, then the contact.
     """,
+    open_description="""
+        Two balls collide once, obliquely, in free space; there is no gravity and no friction, and
+        the balls do not rotate, so each ball is a point mass with a contact radius. Ball 0 has mass
+        m0 = {mass0} kg and radius r0 = {radius0} m; its centre starts at [0, 0, 0] with the
+        velocity [{velocity}, 0, 0] m/s. Ball 1 has mass m1 = {mass1} kg and radius r1 = {radius1}
+        m; its centre starts at rest at [{distance}, {offset}, 0] m. The impact is a penalty
+        contact: while the two spheres overlap, a linear spring of stiffness k = {stiffness} N/m
+        acts on the overlap along the line of centres, with no viscous damping, plus the hysteresis
+        damping of Gonthier et al. / Carvalho-Martins that gives the coefficient of restitution
+        e = {restitution}; no friction.
+    """,
     params=(
         Param("mass0", 0.1, 1.0, "kg"),
         Param("radius0", 0.03, 0.08, "m"),

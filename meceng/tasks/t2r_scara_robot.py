@@ -51,6 +51,29 @@ TASK = TaskModel(
         the ground, link 1, link 2, joint 1, joint 2, then the torque on link 1 and the torque on
         link 2.
     """,
+    open_description="""
+        A two-link SCARA robot arm moves in the horizontal x-y plane. Both links are homogeneous
+        straight bars of density {density} kg/m^3 with a square cross-section of 0.04 m by 0.04 m;
+        link 1 has the length L1 = {length1} m, link 2 the length L2 = {length2} m, and their centre
+        lines lie in the plane z = 0. Joint 1, a frictionless hinge with the vertical axis
+        [0, 0, 1], connects one end of link 1 to the fixed world at [0, 0, 0]; joint 2, also a
+        frictionless hinge with a vertical axis, connects the other end of link 1 to one end of link
+        2. The joint angle q1 is the angle of link 1 measured counter-clockwise (about the positive
+        z-axis) from the positive x-axis, q2 the angle of link 2 relative to link 1, also
+        counter-clockwise. The arm starts at rest with q1 = q1s = {q1_start_deg} degrees and
+        q2 = q2s = {q2_start_deg} degrees: joint 2 is at L1*[cos(q1s), sin(q1s), 0] and link 2
+        points from there along [cos(q1s + q2s), sin(q1s + q2s), 0]. Gravity g = 9.81 m/s^2 acts in
+        the negative z-direction, along the joint axes. Each joint angle is to follow the cosine
+        trajectory q_i,d(t) = q_is + (q_ie - q_is)*(1 - cos(pi*t/T))/2 with the rate
+        q_i,d'(t) = (q_ie - q_is)*pi/(2*T)*sin(pi*t/T) for t < T, and q_i,d = q_ie, q_i,d' = 0 for t
+        >= T, with the end angles q1e = {q1_end_deg} degrees and q2e = {q2_end_deg} degrees and the
+        motion time T = {duration} s. Motors in the joints apply the PD control torques
+        tau_i = k_P*(q_i,d - q_i) + k_D*(q_i,d' - q_i') (angles in radians) with k_P = {kp} N*m/rad
+        and k_D = {kd} N*m*s/rad, where q_i and q_i' are the actual joint angles and rates: tau1
+        acts on link 1 about the positive z-axis (its reaction goes into the fixed world), tau2 acts
+        on link 2 about the positive z-axis and, as reaction, -tau2 on link 1. There is no other
+        load and no friction.
+    """,
     params=(
         Param("density", 2000.0, 8000.0, "kg/m^3"),
         Param("length1", 0.3, 0.5, "m"),
