@@ -107,8 +107,10 @@ SPHERE_SPHERE_CONTACT = Component(
           contactDamping=0.
         - One contact object per pair of spheres that can touch (e.g. neighbours 0-1, 1-2, 2-3).
         - dynamicFriction > 0 needs rigid bodies; without friction mass points are enough.
-        - Contact needs small time steps (about 1e-4 s); the solver may also need
-          simulationSettings.timeIntegration.discontinuous.iterationTolerance = 1e-3.
+        - Contact needs small time steps (about 1e-4 s). Where the solver stops at an impact, set both
+          simulationSettings.timeIntegration.discontinuous.iterationTolerance = 1e-3 and
+          simulationSettings.timeIntegration.discontinuous.useRecommendedStepSize = False: the
+          tolerance alone can stop it at the first impact of a ball on a floor triangle.
     """),
     example=rigid_example(
         """
