@@ -126,5 +126,9 @@ def load_runs(paths: list[Path]) -> list[Run]:
 def stage_rate(tasks: list[dict[str, Any]], stage: str) -> Rate:
     if stage == "overall":
         return Rate(sum(1 for t in tasks if t.get("overall")), len(tasks))
-    passed = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage and s["passed"])
-    return Rate(passed, len(tasks))
+    passed = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage and s["passed"]
+                 and s.get("required", True) is not False)
+    # a record that does not require the stage (an open text's writing stages) is not in its rate
+    exempt = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage
+                 and s.get("required", True) is False)
+    return Rate(passed, len(tasks) - exempt)
