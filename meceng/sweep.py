@@ -17,7 +17,6 @@ assemblies, longer descriptions) starts from a 6144-token context (section 4.2).
 
 from __future__ import annotations
 
-import asyncio
 import itertools
 import re
 import tomllib
@@ -26,10 +25,9 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-import httpx
-
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.llm.types import LLMSettings
+from meceng.sweep_hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
 from meceng.tasks import default_registry
 
 BASE_CTX = 4096
@@ -335,31 +333,6 @@ def workload(levels: tuple[str, ...], only: tuple[str, ...], variations: int, se
 
 def point_workload(point: GridPoint) -> tuple[int, int]:
     return workload(point.levels, point.only, point.variations, point.seed, point.texts)
-
-
-async def _answers(host: str, path: str, ok: tuple[int, ...], timeout_s: float = 3.0) -> bool:
-    try:
-        async with httpx.AsyncClient(timeout=timeout_s) as client:
-            response = await client.get(host.rstrip("/") + path)
-            return response.status_code in ok
-    except httpx.HTTPError:
-        return False
-
-
-def unreachable_hosts(points: list[GridPoint]) -> list[str]:
-    """Ollama hosts that do not answer ``/api/version`` and OpenAI-compatible servers that do not
-    answer ``/models`` (401/403 count as up: the key is checked when the run starts). Hosted
-    APIs are not probed."""
-    hosts = sorted({h for p in points if p.llm().backend == "ollama" for h in p.model.hosts})
-    openai_hosts = sorted({h for p in points if p.llm().backend == "openai" for h in p.model.hosts
-                           if "api.openai.com" not in h})
-
-    async def probe() -> list[str]:
-        results = await asyncio.gather(*(_answers(h, "/api/version", (200,)) for h in hosts),
-                                       *(_answers(h, "/models", (200, 401, 403)) for h in openai_hosts))
-        return [h for h, ok in zip(hosts + openai_hosts, results, strict=True) if not ok]
-
-    return asyncio.run(probe()) if hosts or openai_hosts else []
 
 
 def with_overrides(study: Study, **changes: Any) -> Study:
