@@ -284,3 +284,17 @@ def test_report_puts_paper_and_open_rates_side_by_side(tmp_path: Path) -> None:
     assert "| m T=0 think=False CI1/MBS1 | 25.0 " in section and "| +25.0 |" in section
     table2 = markdown.split("## Success per stage", 1)[1].split("\n## ", 1)[0]
     assert "texts=open" in table2  # the open run's own row, never pooled with the paper run
+
+
+def test_paper_and_open_ground_truths_share_a_reference_store_entry() -> None:
+    """The ground truth is one program whatever text describes it: only its header comment differs,
+    and the store's key leaves that out; another seed is another entry."""
+    from meceng.pipeline.store import reference_key
+
+    model = default_registry().get(PENDULUM)
+    paper, open_ = model.instance(1), model.instance(1, texts="open")
+    assert paper.reference_program != open_.reference_program
+    limits = ExecutionLimits()
+    key = reference_key(paper.reference_program, paper.sim.block(), limits)
+    assert key == reference_key(open_.reference_program, open_.sim.block(), limits)
+    assert key != reference_key(model.instance(2).reference_program, paper.sim.block(), limits)
