@@ -174,7 +174,7 @@ def print_summary(run_json: Path) -> None:
     summary = run["summary"]
     print(f"{run_json}\n{summary['counted']} tasks graded, {summary['infrastructure_failures']} infrastructure "
           "failures")
-    texts = run["settings"]["pipeline"].get("texts", "paper")
+    texts = run.get("texts") or run.get("settings", {}).get("pipeline", {}).get("texts", "paper")
     if texts != "paper":
         print(f"task texts: {texts} (graded by behaviour: topology, graph content and solution not required)")
     if run.get("without_text"):
