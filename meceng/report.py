@@ -23,6 +23,7 @@ from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.report import (
     FLEXIBLE_COLUMNS,
     RIGID_COLUMNS,
+    TEXTS_HEADERS,
     behaviour_table,
     component_series,
     difficulty,
@@ -32,6 +33,8 @@ from meceng.eval.report import (
     repair_table,
     series,
     stage_table,
+    texts_cells,
+    texts_table,
     thinking_table,
     token_cost_table,
     tools_contribution,
@@ -148,25 +151,22 @@ def _release_plot(path: Path, points: list[tuple[str, str, float | None, float]]
     plt.close(fig)
 
 
-def model_facts(path: Path | None) -> dict[str, tuple[str, float | None]]:
-    """model name -> (release date, size in B) from a sweep spec's [[models]] entries."""
-    if path is None:
-        return {}
+def _spec_models(path: Path | None) -> list[dict[str, Any]]:
+    """A sweep spec's [[models]] entries (none without a spec)."""
     import tomllib
 
-    data = tomllib.loads(path.read_text())
-    return {m["name"]: (str(m["release"]), m.get("size_b")) for m in data.get("models", []) if m.get("release")}
+    return [] if path is None else list(tomllib.loads(path.read_text()).get("models", []))
+
+
+def model_facts(path: Path | None) -> dict[str, tuple[str, float | None]]:
+    """model name -> (release date, size in B) from a sweep spec's [[models]] entries."""
+    return {m["name"]: (str(m["release"]), m.get("size_b")) for m in _spec_models(path) if m.get("release")}
 
 
 def model_prices(path: Path | None) -> dict[str, tuple[float, float]]:
     """model name -> (price per million prompt tokens, per million completion tokens) from a sweep
     spec's [[models]] entries that give both."""
-    if path is None:
-        return {}
-    import tomllib
-
-    data = tomllib.loads(path.read_text())
-    return {m["name"]: (float(m["price_prompt"]), float(m["price_completion"])) for m in data.get("models", [])
+    return {m["name"]: (float(m["price_prompt"]), float(m["price_completion"])) for m in _spec_models(path)
             if m.get("price_prompt") is not None and m.get("price_completion") is not None}
 
 
@@ -183,6 +183,10 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     _bar_plot(out / "stages.png", {r["run"]: {label: r[k] for k, label in RIGID_COLUMNS} for r in stages},
               "Success rate per stage", "success (%)")
     sections.append(("Success per stage (Table 2)", md, ht, "stages.png"))
+
+    texts = texts_table(runs)
+    md, ht = _table(TEXTS_HEADERS, [texts_cells(r) for r in texts])
+    sections.append(("Paper and open texts side by side (levels 1-2; open texts graded by behaviour)", md, ht, None))
 
     thinking = thinking_table(runs)
     md, ht = _table(["model", "think", "n", "overall", "completion tokens (mean)", "LLM time (min)"],
@@ -335,6 +339,8 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
         "topology_causes": causes,
         "behaviour_disagreements": differ,
         "tokens": tokens,
+        "texts": [{**{k: v for k, v in r.items() if not isinstance(v, Rate)},
+                   **{k: r[k].to_json() for k in ("paper", "paper_behaviour", "open")}} for r in texts],
         "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
                        for r in hard],
     }

@@ -7,7 +7,8 @@ temperature 0 without thinking, then temperature, thinking, prompt variants CI1-
 MBS1-MBS4, level 3), so studies share grid points; each point is one run folder named from
 everything that defines it, and a point two studies share runs once. A point whose run.json
 exists is skipped, one whose folder holds an unfinished journal is resumed, so rerunning a sweep
-only does missing work. A spec without ``[[studies]]`` is one study of its ``[grid]``.
+only does missing work. A spec without ``[[studies]]`` is one study of its ``[grid]``. A study's
+``texts = ["paper", "open"]`` (or ``grid.texts``) runs its points on both task texts (issue 36).
 
 Token limits follow the paper (section 2.3): context 4096 and answer 2048 tokens, times 1.5 for
 models that reason even with thinking off, times 3.75 with thinking on; level 3 (parts and
@@ -16,7 +17,6 @@ assemblies, longer descriptions) starts from a 6144-token context (section 4.2).
 
 from __future__ import annotations
 
-import asyncio
 import itertools
 import re
 import tomllib
@@ -25,10 +25,9 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-import httpx
-
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.llm.types import LLMSettings
+from meceng.sweep_hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
 from meceng.tasks import default_registry
 
 BASE_CTX = 4096
@@ -82,6 +81,7 @@ class Study:
     agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark
     repair_tools: bool = True
     drafts_per_task: int = 1
+    texts: tuple[str, ...] = ("paper",)  # an axis: the paper's task texts and/or the open ones (issue 36)
 
 
 @dataclass(frozen=True)
@@ -118,6 +118,7 @@ class GridPoint:
     agent: str = "pipeline"
     repair_tools: bool = True
     drafts_per_task: int = 1
+    texts: str = "paper"
 
     @property
     def default_sampling(self) -> bool:
@@ -148,6 +149,8 @@ class GridPoint:
             text += "_only-" + "-".join(self.only)
         if self.model.vision:  # only then: the folders of earlier sweeps keep their names
             text += "_vision"
+        if self.texts != "paper":  # likewise: a paper-text run's folder keeps its name
+            text += f"_texts-{self.texts}"
         if self.agent == "repair":
             text += f"_repair-tools-{'on' if self.repair_tools else 'off'}-d{self.drafts_per_task}"
         elif self.agent != "pipeline":
@@ -175,9 +178,10 @@ def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
         raise ValueError(f"{where}: unknown keys {sorted(unknown)}")
 
 
-SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task"}
+SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task",
+              "texts"}
 AGENTS = ("pipeline", "loop", "repair")
-GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
+GRID_KEYS = {"temperature", "think", "select_template", "code_template", "texts"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
 
@@ -192,18 +196,35 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
     grid = {**defaults.get("grid", {}), **data.get("grid", {})}
     _check_keys(f"study {name} grid", grid, GRID_KEYS)
     merged = {**defaults, **data}
+    levels = tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"])))
+    only = _only(merged.get("only", []))
     return Study(
         name=name, models=models,
         temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [0.0]))),
         thinks=_tuple(grid.get("think", [False])),
         select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
         code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
-        levels=tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"]))),
-        only=_only(merged.get("only", [])),
+        levels=levels, only=only,
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
         description=str(data.get("description", "")), agent=_agent(name, merged.get("agent", "pipeline")),
         repair_tools=_tools(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
+        texts=_texts(name, grid.get("texts", merged.get("texts", ["paper"])), levels, only),
     )
+
+
+def _texts(study: str, value: Any, levels: tuple[str, ...], only: tuple[str, ...]) -> tuple[str, ...]:
+    """A study's ``texts`` (``["paper", "open"]``): each a kind of task text its levels have; a
+    study of open texts on levels without them (3a, 3b) is refused here, not when its run starts."""
+    texts = tuple(str(x) for x in _tuple(value))
+    registry = default_registry()
+    for kind in texts:
+        try:
+            registry.with_texts(registry.select(levels, only or None), kind, levels, only)
+        except ValueError as exc:
+            raise ValueError(f"study {study}: texts = {kind!r}: {exc}") from None
+    if not texts:
+        raise ValueError(f"study {study}: texts = []; give \"paper\", \"open\" or both")
+    return texts
 
 
 def _agent(study: str, value: Any) -> str:
@@ -264,10 +285,12 @@ def study_points(study: Study) -> list[GridPoint]:
     """The study's runs; points that coincide (a hosted model at several temperatures it never
     receives) are one."""
     points = {}
-    for model, temperature, think, select, code in itertools.product(
-            study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates):
+    for model, temperature, think, select, code, texts in itertools.product(
+            study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates,
+            study.texts):
         point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
-                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task)
+                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task,
+                          texts)
         points.setdefault(point.name, point)
     return list(points.values())
 
@@ -295,44 +318,21 @@ def unique_points(planned: list[PlannedRun]) -> list[GridPoint]:
 
 
 @cache
-def workload(levels: tuple[str, ...], only: tuple[str, ...], variations: int, seed: int) -> tuple[int, int]:
+def workload(levels: tuple[str, ...], only: tuple[str, ...], variations: int, seed: int,
+             texts: str = "paper") -> tuple[int, int]:
     """(task records, LLM requests at most) of one pipeline run: an assembly counts its distinct
-    parts too, and its own two requests are made only when every part passed."""
+    parts too, and its own two requests are made only when every part passed; open texts count the
+    models that have one."""
     registry = default_registry()
-    models = registry.select(levels, only or None)
+    models, _ = registry.with_texts(registry.select(levels, only or None), texts, levels, only)
     records = 0
-    for instance in registry.instances(models, seed, variations):
+    for instance in registry.instances(models, seed, variations, texts):
         records += 1 + len({part.key for _, part in instance.parts}) if instance.kind == "assembly" else 1
     return records, records * REQUESTS_PER_TASK
 
 
 def point_workload(point: GridPoint) -> tuple[int, int]:
-    return workload(point.levels, point.only, point.variations, point.seed)
-
-
-async def _answers(host: str, path: str, ok: tuple[int, ...], timeout_s: float = 3.0) -> bool:
-    try:
-        async with httpx.AsyncClient(timeout=timeout_s) as client:
-            response = await client.get(host.rstrip("/") + path)
-            return response.status_code in ok
-    except httpx.HTTPError:
-        return False
-
-
-def unreachable_hosts(points: list[GridPoint]) -> list[str]:
-    """Ollama hosts that do not answer ``/api/version`` and OpenAI-compatible servers that do not
-    answer ``/models`` (401/403 count as up: the key is checked when the run starts). Hosted
-    APIs are not probed."""
-    hosts = sorted({h for p in points if p.llm().backend == "ollama" for h in p.model.hosts})
-    openai_hosts = sorted({h for p in points if p.llm().backend == "openai" for h in p.model.hosts
-                           if "api.openai.com" not in h})
-
-    async def probe() -> list[str]:
-        results = await asyncio.gather(*(_answers(h, "/api/version", (200,)) for h in hosts),
-                                       *(_answers(h, "/models", (200, 401, 403)) for h in openai_hosts))
-        return [h for h, ok in zip(hosts + openai_hosts, results, strict=True) if not ok]
-
-    return asyncio.run(probe()) if hosts or openai_hosts else []
+    return workload(point.levels, point.only, point.variations, point.seed, point.texts)
 
 
 def with_overrides(study: Study, **changes: Any) -> Study:

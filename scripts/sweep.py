@@ -49,6 +49,7 @@ from meceng.sweep import (
     unreachable_hosts,
     with_overrides,
 )
+from meceng.tasks.base import TEXTS
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_SPEC = ROOT / "sweeps" / "default.toml"
@@ -118,6 +119,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--select-template", action="append")
     p.add_argument("--code-template", action="append")
     p.add_argument("--levels", type=parse_levels)
+    p.add_argument("--texts", action="append", choices=TEXTS,
+                   help="task texts: paper and/or open (levels 1-2, graded by behaviour); repeat for both")
     p.add_argument("--only", action="append", default=None, help="task slugs or ids, comma-separated; repeatable")
     p.add_argument("--variations", type=positive_int)
     p.add_argument("--seed", type=int)
@@ -161,7 +164,8 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
             thinks=tuple(args.think) if args.think else None,
             select_templates=tuple(args.select_template) if args.select_template else None,
             code_templates=tuple(args.code_template) if args.code_template else None,
-            levels=args.levels, variations=args.variations, seed=args.seed, only=only))
+            levels=args.levels, variations=args.variations, seed=args.seed, only=only,
+            texts=tuple(dict.fromkeys(args.texts)) if args.texts else None))
     return replace(spec, studies=tuple(changed), out=args.out or spec.out, workers=args.workers or spec.workers,
                    exec_timeout_s=args.timeout or spec.exec_timeout_s)
 
@@ -206,7 +210,8 @@ def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespac
             out=spec.out, run_name=name, workers=workers, exec_timeout_s=spec.exec_timeout_s,
             select_template=point.select_template, code_template=point.code_template,
             progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
-            agent=point.agent, repair_tools=point.repair_tools, drafts_per_task=point.drafts_per_task)
+            agent=point.agent, repair_tools=point.repair_tools, drafts_per_task=point.drafts_per_task,
+            texts=point.texts)
         jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0], point))
     return jobs
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -10,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from meceng.pipeline import evaluate_program
+from meceng.tasks.base import TaskModel
 from meceng.tasks.registry import default_registry
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,6 +44,53 @@ def test_gold_sweep_scores_everything(tmp_path: Path) -> None:
                            "error_categories", "timing", "tokens"}
     generated = tmp_path / "gold" / record["files"]["generated"]
     assert generated.read_text().startswith("# MecEng generated program")
+
+
+def _open_models() -> list[TaskModel]:
+    return [m for m in default_registry().select(["1", "2"]) if isinstance(m, TaskModel) and m.open_description]
+
+
+@pytest.fixture(scope="module")
+def gold_open_run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict]:
+    """One gold run, as a user starts it, over every model that has an open text, at the four seeds
+    the open texts' lint checks (0-3), with the machine's workers; those without one are left out
+    and named (issue 36)."""
+    out = tmp_path_factory.mktemp("gold-open")
+    proc = subprocess.run(
+        [sys.executable, "-m", "meceng", "run", "--texts", "open", "--model", "gold", "--levels", "1,2",
+         "--variations", "4", "--seed", "0", "--out", str(out), "--name", "gold-open", "--no-progress"],
+        capture_output=True, text=True, timeout=3000, env={**os.environ, "PYTHONPATH": str(ROOT)},
+    )
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    return out / "gold-open", json.loads((out / "gold-open" / "run.json").read_text())
+
+
+@pytest.mark.timeout(1200)
+@pytest.mark.parametrize("slug", [m.slug for m in _open_models()])
+def test_gold_passes_behaviour_on_every_open_text_at_four_seeds(gold_open_run: tuple[Path, dict], slug: str) -> None:
+    _, run = gold_open_run
+    records = [t for t in run["tasks"] if t["slug"] == slug]
+    assert sorted(t["seed"] for t in records) == [0, 1, 2, 3]
+    for t in records:
+        assert t["texts"] == "open" and t["graded_by"] == "behaviour", t["seed"]
+        assert t["overall"] and t["behaviour"]["passed"], (t["seed"], t["first_failure"], t["behaviour"]["detail"])
+        assert t["stages"][-1]["name"] == "behaviour_match" and t["stages"][-1]["passed"]
+        assert {s["name"] for s in t["stages"] if s.get("required") is False} == {
+            "choose_components", "topology_match", "graph_content_match", "solution_match"}
+        model = default_registry().get(slug)
+        assert t["description"] == model.describe(model.sample_params(t["seed"]), "open")
+
+
+@pytest.mark.timeout(1200)
+def test_gold_open_run_says_its_texts_and_who_was_left_out(gold_open_run: tuple[Path, dict]) -> None:
+    folder, run = gold_open_run
+    slugs = {m.slug for m in _open_models()}
+    assert {t["slug"] for t in run["tasks"]} == slugs and len(run["tasks"]) == 4 * len(slugs)
+    rigid = [m.slug for m in default_registry().select(["1", "2"])]
+    assert run.get("without_text", []) == [s for s in rigid if s not in slugs]
+    assert run["settings"]["pipeline"]["texts"] == "open" and run["texts"] == "open"
+    assert json.loads((folder / "settings.json").read_text())["pipeline"]["texts"] == "open"  # what --resume reads
+    assert run["summary"]["rates"]["overall"] == 1.0
 
 
 @pytest.mark.slow

@@ -13,6 +13,8 @@ prompt (audit of issue 26). Levels 1-2 name no file, so for them the rule is unc
 
 from __future__ import annotations
 
+import re
+
 SELECT_TEMPLATES: dict[str, str] = {
     "CI1": """\
 You are an expert in multibody dynamics and in the Python multibody simulation code Exudyn.
@@ -227,10 +229,41 @@ def select_prompt(template: str, description: str, menu: str) -> str:
     return templates[template].format(description=description, menu=menu)
 
 
-def code_prompt(template: str, description: str, context: str) -> str:
+def code_prompt(template: str, description: str, context: str, texts: str = "paper") -> str:
+    """The code prompt; for an open text (``texts="open"``) in its neutral version (``neutral``)."""
     context = context or "(no components were chosen; use your knowledge of Exudyn)"
     templates = PART_CODE_TEMPLATES if template in PART_CODE_TEMPLATES else CODE_TEMPLATES
-    return templates[template].format(description=description, context=context)
+    text = templates[template].format(description=description, context=context)
+    return neutral(text) if texts == "open" else text
+
+
+#: What the code templates and the component documentation say that an open text leaves free
+#: (issue 36): the creation order and the order of a connector's two items ("the ground first").
+#: The paper's texts state that order and its grader compares it; an open text states neither, so
+#: its prompt says each rule in a neutral version (the documentation and the rules about files,
+#: solver settings and the code block stay). Patterns allow any line break and indentation.
+OPEN_TEXT_NEUTRAL: tuple[tuple[str, str], ...] = (
+    # MBS1's rule, MBS3's requirement 2 and MBS4's sentence on the creation order
+    (r"- Create bodies, nodes, connectors and loads in exactly the order given in the description;\s+"
+     r"bodies in the order of their index\.",
+     "- Create the bodies, nodes, connectors and loads the described system needs, in any order."),
+    (r"2\. Order: create items in the order stated in the description; bodies in the order of their index\.",
+     "2. Items: the bodies, nodes, connectors and loads the described system needs, in any order."),
+    (r"derive positions and rotations(\s+)from the stated formulas\.",
+     r"derive positions and rotations\1from the stated geometry."),
+    (r"adding items in the order given,", "adding the items it needs,"),
+    # the Ground component's documentation: which of a connector's two items comes first
+    (r":\s+list the two items in the order the description names them, the ground first where\s+"
+     r"it gives no order\.", "."),
+)
+
+
+def neutral(text: str) -> str:
+    """``text`` (a code prompt, component documentation) as an open-text task gets it: every rule
+    of ``OPEN_TEXT_NEUTRAL`` in its neutral version."""
+    for pattern, replacement in OPEN_TEXT_NEUTRAL:
+        text = re.sub(pattern, replacement, text)
+    return text
 
 
 REPAIR_NOTE = """
@@ -244,9 +277,9 @@ program in a single ```python code block.
 """
 
 
-def repair_prompt(template: str, description: str, context: str, draft: str) -> str:
+def repair_prompt(template: str, description: str, context: str, draft: str, texts: str = "paper") -> str:
     """The repair benchmark's question: the task's code prompt, then the faulty program."""
-    return code_prompt(template, description, context) + REPAIR_NOTE.format(draft=draft.rstrip())
+    return code_prompt(template, description, context, texts) + REPAIR_NOTE.format(draft=draft.rstrip())
 
 
 def gold_selection(names: tuple[str, ...] | list[str]) -> str:

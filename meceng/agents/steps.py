@@ -63,7 +63,7 @@ def generation_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str
                       template: str) -> str:
     """The code prompt after the model chose ``names``: the description and the documentation of the
     chosen components with their dependencies."""
-    return code_prompt(template, instance.description, catalog.context(names))
+    return code_prompt(template, instance.description, catalog.context(names), instance.texts)
 
 
 async def _ask(backend: Backend, request: ChatRequest) -> tuple[ChatResponse | None, str | None, dict[str, Any]]:

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
+from meceng.agents.prompts import neutral
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
 from meceng.inspect import snapshot as pictures
@@ -87,6 +88,8 @@ class Toolbox:
                     names = [n.strip() for n in names.split(",")]
                 unknown = [n for n in names if n not in self.catalog]
                 text = self.catalog.context([n for n in names if n in self.catalog])
+                if self.instance.texts == "open":  # the documentation as the open text's prompt has it
+                    text = neutral(text)
                 return ToolResult(text + (f"\n\nUnknown components: {', '.join(unknown)}" if unknown else ""))
         except KeyError as exc:
             return ToolResult(json.dumps({"error": f"missing argument {exc.args[0]!r} for tool {name}"}))

@@ -12,7 +12,14 @@ from pathlib import Path
 from typing import Any
 
 from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
-from meceng.cli.arguments import LEVELS, add_run_arguments, parse_levels, parse_think, positive_int
+from meceng.cli.arguments import (
+    LEVELS,
+    add_run_arguments,
+    add_texts_argument,
+    parse_levels,
+    parse_think,
+    positive_int,
+)
 from meceng.cli.commands import (
     cmd_drafts,
     cmd_evaluate,
@@ -64,12 +71,14 @@ def build_parser() -> argparse.ArgumentParser:
         p = tsub.add_parser(name, help=helptext)
         p.add_argument("slug", help="task slug or paper id")
         p.add_argument("--seed", type=int, default=0)
+        add_texts_argument(p)
         if name == "show":
             p.add_argument("--json", action="store_true")
         p.set_defaults(func=func)
     p = tsub.add_parser("prompt", help="print the prompts a model gets for one task instance")
     p.add_argument("slug", help="task slug or paper id")
     p.add_argument("--seed", type=int, default=0)
+    add_texts_argument(p)
     p.add_argument("--select-template", choices=tuple(SELECT_TEMPLATES), default=DEFAULT_SELECT,
                    help="selection template (levels 1, 2, 3b; a part always gets PART1)")
     p.add_argument("--code-template", choices=tuple(CODE_TEMPLATES), default=DEFAULT_CODE,
@@ -83,6 +92,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("slug")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--code", type=Path, required=True, help="the Python program to grade")
+    add_texts_argument(p)
     p.add_argument("--components", default=None, help="comma-separated chosen components (optional)")
     p.add_argument("--timeout", type=float, default=60.0)
     p.add_argument("--json", action="store_true")

@@ -55,6 +55,16 @@ def parse_think(text: str) -> bool | str:
     raise argparse.ArgumentTypeError("think must be on/off or low/medium/high")
 
 
+def add_texts_argument(parser: argparse.ArgumentParser) -> None:
+    """``--texts paper|open``: which task text the model reads (issue 36)."""
+    from meceng.tasks.base import TEXTS
+
+    parser.add_argument("--texts", choices=TEXTS, default="paper",
+                        help="paper: the paper's task texts, which say how to write the program (graded by the "
+                             "paper's stages); open: the system in an engineer's words, levels 1 and 2 only "
+                             "(graded by behaviour)")
+
+
 def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model", default="gold", help="model name (Ollama name, or 'gold')")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
@@ -88,6 +98,7 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--levels", type=parse_levels, default=("1", "2"), help="e.g. 1,2")
     parser.add_argument("--only", action="append", default=[],
                         help="task slugs or ids, comma-separated; repeatable")
+    add_texts_argument(parser)
     parser.add_argument("--variations", type=positive_int, default=3, help="parameter variations per model")
     parser.add_argument("--seed", type=int, default=0, help="first instance seed")
     parser.add_argument("--out", type=Path, default=Path("runs"), help="directory for run folders")
@@ -153,7 +164,7 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         select_template=args.select_template, code_template=args.code_template,
         progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
         repair_tools=args.tools == "on", drafts_per_task=args.drafts_per_task,
-        token_budget=args.token_budget,
+        token_budget=args.token_budget, texts=args.texts,
     )
 
 

@@ -40,7 +40,14 @@ def _instance(args: argparse.Namespace) -> Any:
     except UnknownTaskError as exc:
         print(f"error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
-    return model.instance(args.seed)
+    texts = getattr(args, "texts", "paper")
+    if texts == "paper":
+        return model.instance(args.seed)
+    if not getattr(model, "open_description", ""):  # parts, assemblies, and models still without one
+        what = "a level-3 task" if model.level in ("3a", "3b") else "a task model without one yet"
+        print(f"error: {model.slug} has no {texts} text ({what}); use --texts paper", file=sys.stderr)
+        raise SystemExit(2)
+    return model.instance(args.seed, texts=texts)
 
 
 def cmd_tasks_show(args: argparse.Namespace) -> int:
@@ -49,7 +56,8 @@ def cmd_tasks_show(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(data, indent=1))
         return 0
-    print(f"{instance.task_id} {instance.name} (level {instance.level}, seed {instance.seed})\n")
+    text = "" if instance.texts == "paper" else f", {instance.texts} text"
+    print(f"{instance.task_id} {instance.name} (level {instance.level}, seed {instance.seed}{text})\n")
     print(instance.description + "\n")
     print("parameters: " + ", ".join(f"{k} = {v}" for k, v in instance.params.items()))
     print("required components: " + ", ".join(instance.required_components))
@@ -92,20 +100,24 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
     selected = tuple(x.strip() for x in args.components.split(",") if x.strip()) if args.components else None
     verdict, candidate, _ = asyncio.run(
         evaluate_program(instance, code, selected, limits=ExecutionLimits(timeout_s=args.timeout)))
-    data = {"task": instance.slug, "seed": instance.seed, **verdict.to_json(), "execution": candidate.summary()}
+    data = {"task": instance.slug, "seed": instance.seed, "texts": instance.texts, **verdict.to_json(),
+            "execution": candidate.summary()}
     if args.json:
         print(json.dumps(data, indent=1, default=str))
     else:
         for stage in verdict.stages:
             mark = {True: "pass", False: "FAIL", None: " -- "}[stage.passed]
-            print(f"[{mark}] {stage.name:<22} {stage.detail}")
+            print(f"[{mark}] {stage.name:<22} {stage.detail}" if stage.required else
+                  f"[ -- ] {stage.name:<22} {stage.detail}")
         print(f"overall: {'success' if verdict.overall else 'failure'}"
+              + (" (open text: graded by behaviour)" if verdict.graded_by == "behaviour" else "")
               + (f" (first failure: {verdict.first_failure})" if verdict.first_failure else ""))
         if verdict.error_categories:
             print("error categories: " + ", ".join(verdict.error_categories))
         if verdict.infrastructure_error:
             print(f"infrastructure error: {verdict.infrastructure_error}")
-        if verdict.behaviour is not None:  # beside the paper's verdict; the exit status stays the paper's
+        if verdict.behaviour is not None and verdict.graded_by == "paper":
+            # beside the paper's verdict; the exit status stays the paper's (an open text's is behaviour)
             mark = {True: "pass", False: "FAIL", None: " -- "}[verdict.behaviour["passed"]]
             print(f"behaviour: [{mark}] {verdict.behaviour['detail']}")
     return 0 if verdict.overall else 1
@@ -162,6 +174,12 @@ def print_summary(run_json: Path) -> None:
     summary = run["summary"]
     print(f"{run_json}\n{summary['counted']} tasks graded, {summary['infrastructure_failures']} infrastructure "
           "failures")
+    texts = run.get("texts") or run.get("settings", {}).get("pipeline", {}).get("texts", "paper")
+    if texts != "paper":
+        print(f"task texts: {texts} (graded by behaviour: topology, graph content and solution not required)")
+    if run.get("without_text"):
+        left = run["without_text"]
+        print(f"left out, no {texts} text yet: {len(left)} task models ({', '.join(left)})")
     # one line per level: parts and assemblies have different stages, a mixed rate would mislead
     for level, block in summary["levels"].items():
         line = "  ".join(f"{k}: {v * 100:.1f}%" for k, v in block["rates"].items() if v is not None)
@@ -173,7 +191,7 @@ def print_summary(run_json: Path) -> None:
               + (f"  [{lost_here} lost to the server]" if lost_here else "")
               + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
     behaviour = summary.get("behaviour")
-    if behaviour and behaviour.get("graded"):
+    if behaviour and behaviour.get("graded") and texts == "paper":  # an open text's overall is behaviour
         differ = behaviour["paper_only"] + behaviour["behaviour_only"]
         print(f"behaviour (levels 1, 2, 3b): {behaviour['passed']}/{behaviour['graded']} passed "
               f"({100 * behaviour['rate']:.1f}%); the paper's verdict differs on {differ} "

@@ -32,15 +32,20 @@ def stage_rates(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
     records = list(records)
     counted = [r for r in records if r.get("first_failure") != "infrastructure"]
     passed: Counter[str] = Counter()
+    # a stage a record does not require (an open text's writing stages) is in no rate: a stage's rate
+    # is over the records that require it, None when none does
+    exempt: Counter[str] = Counter()
     order: list[str] = []
     for r in counted:
         for s in r.get("stages", []):
             if s["name"] not in order:
                 order.append(s["name"])
-            if s["passed"]:
+            if s.get("required", True) is False:
+                exempt[s["name"]] += 1
+            elif s["passed"]:
                 passed[s["name"]] += 1
     n = len(counted)
-    rates = {name: (passed[name] / n if n else None) for name in order}
+    rates = {name: (passed[name] / (n - exempt[name]) if n - exempt[name] else None) for name in order}
     overall = sum(1 for r in counted if r.get("overall"))
     rates["overall"] = overall / n if n else None
     return {"tasks": len(records), "counted": n, "infrastructure_failures": len(records) - n,

@@ -4,10 +4,17 @@ choose components -> finished assemble -> topology match -> graph content match 
 -> solution match -> overall. Finished assemble gates everything after it, topology gates graph
 content, and solver success gates the solution match; a stage that was not evaluated because
 its gate failed is recorded with ``passed = None`` and counts as not passed in the rates.
+
+An open text (issue 36: the system in an engineer's words, ``TaskInstance.texts == "open"``) does
+not say how to write the program, so the stages that compare the writing with the ground truth's
+(topology, graph content, the solution's coordinates) and the component choice are recorded as not
+required (``required=False``: in no rate, never a failure), and the task passes when its system
+moves as the ground truth's: a ``behaviour_match`` stage after the solver (``by_behaviour``).
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -27,15 +34,24 @@ RIGID_STAGES = (
     "solution_match",
 )
 
+#: An open-text task's stages: the paper's, then the behaviour verdict as a stage of its own.
+BEHAVIOUR_STAGE = "behaviour_match"
+#: The paper's stages an open text does not require: they compare how a program is written.
+NOT_REQUIRED_BY_OPEN_TEXTS = ("choose_components", "topology_match", "graph_content_match", "solution_match")
+
 
 @dataclass(frozen=True)
 class StageResult:
     name: str
     passed: bool | None
     detail: str = ""
+    # False: recorded but not part of the verdict (an open text's writing stages): in no rate, never
+    # the first failure. Written to the record only when False, so the paper's records are unchanged.
+    required: bool = True
 
     def to_json(self) -> dict[str, Any]:
-        return {"name": self.name, "passed": self.passed, "detail": self.detail}
+        return {"name": self.name, "passed": self.passed, "detail": self.detail,
+                **({} if self.required else {"required": False})}
 
 
 @dataclass(frozen=True)
@@ -51,19 +67,21 @@ class Verdict:
     # does the program's system move as the ground truth's (eval.behaviour)? Beside the paper's
     # verdict: it changes neither ``overall`` nor any stage. None: not graded for behaviour (3a).
     behaviour: dict[str, Any] | None = None
+    # "paper": the paper's chain decides; "behaviour": an open-text task (``by_behaviour``)
+    graded_by: str = "paper"
 
     @property
     def overall(self) -> bool:
         if self.infrastructure_error is not None or not self.stages:
             return False
-        return all(s.passed for s in self.stages if not _not_applicable(s))
+        return all(s.passed for s in self.stages if s.required and not _not_applicable(s))
 
     @property
     def first_failure(self) -> str | None:
         if self.infrastructure_error is not None:
             return "infrastructure"
         for stage in self.stages:
-            if stage.passed is False:
+            if stage.passed is False and stage.required:
                 return stage.name
         return None
 
@@ -84,6 +102,7 @@ class Verdict:
             "infrastructure_error": self.infrastructure_error,
             "topology_causes": self.topology_causes,
             **({"behaviour": self.behaviour} if self.behaviour is not None else {}),
+            **({"graded_by": self.graded_by} if self.graded_by != "paper" else {}),
         }
 
 
@@ -154,6 +173,25 @@ def evaluate_rigid(
     return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm,
                    topology_causes=graph.topology.to_json() if graph.topology else None,
                    behaviour=_behaviour(candidate, reference, behaviour, refined))
+
+
+def by_behaviour(verdict: Verdict) -> Verdict:
+    """The verdict of an open-text task from the paper's verdict of the same program: the stages
+    that compare the writing (and the component choice) stay in the record as not required, with
+    what they found in their detail; a ``behaviour_match`` stage after the solver decides. The
+    paper's error categories and graph differences describe the writing, not an error: dropped."""
+    if verdict.infrastructure_error is not None or not verdict.stages:
+        return dataclasses.replace(verdict, graded_by="behaviour")
+    behaviour = verdict.behaviour or {}
+    passed = behaviour.get("passed")
+    stages = [dataclasses.replace(s, required=False, passed=None if s.name != "choose_components" else s.passed,
+                                  detail=f"not required (open text, graded by behaviour): {s.detail}")
+              if s.name in NOT_REQUIRED_BY_OPEN_TEXTS else s for s in verdict.stages]
+    stages.append(StageResult(BEHAVIOUR_STAGE, passed, str(behaviour.get("detail", "not graded"))))
+    # no motion of the ground truth to compare with: not the model's failure
+    infra = None if passed is not None else f"behaviour not graded: {behaviour.get('detail', 'no verdict')}"
+    return Verdict(tuple(stages), solution_norm=verdict.solution_norm, infrastructure_error=infra,
+                   behaviour=verdict.behaviour, graded_by="behaviour")
 
 
 def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourTolerance | None,

@@ -82,9 +82,26 @@ class Run:
         return str(self.settings["prompt"]["code_template"])
 
     @property
+    def texts(self) -> str:
+        """Which task texts the run's tasks had: "paper" (runs before issue 36 say none) or "open"."""
+        return str(self.settings.get("pipeline", {}).get("texts", "paper"))
+
+    @property
+    def model_key(self) -> str:
+        """The model as the report groups runs by it: an open-text run's rates are never pooled with
+        the paper-text runs of the same model (they are graded differently)."""
+        return self.model if self.texts == "paper" else f"{self.model} [{self.texts} texts]"
+
+    @property
     def label(self) -> str:
         return (f"{self.model} T={self.temperature:g} think={self.think} "
-                f"{self.select_template}/{self.code_template}")
+                f"{self.select_template}/{self.code_template}"
+                + ("" if self.texts == "paper" else f" texts={self.texts}"))
+
+    @property
+    def setting_label(self) -> str:
+        """The label without the texts: runs that differ only in their texts share it."""
+        return f"{self.model} T={self.temperature:g} think={self.think} {self.select_template}/{self.code_template}"
 
     def graded(self, levels: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
         """Task records that say something about the model (infrastructure failures left out),
@@ -126,5 +143,9 @@ def load_runs(paths: list[Path]) -> list[Run]:
 def stage_rate(tasks: list[dict[str, Any]], stage: str) -> Rate:
     if stage == "overall":
         return Rate(sum(1 for t in tasks if t.get("overall")), len(tasks))
-    passed = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage and s["passed"])
-    return Rate(passed, len(tasks))
+    passed = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage and s["passed"]
+                 and s.get("required", True) is not False)
+    # a record that does not require the stage (an open text's writing stages) is not in its rate
+    exempt = sum(1 for t in tasks for s in t.get("stages", []) if s["name"] == stage
+                 and s.get("required", True) is False)
+    return Rate(passed, len(tasks) - exempt)

@@ -123,7 +123,7 @@ def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
     """Table 4: per model and thinking setting: overall, tokens, LLM time."""
     groups: dict[tuple[str, str], list[Run]] = defaultdict(list)
     for run in runs:
-        groups[(run.model, run.think)].append(run)
+        groups[(run.model_key, run.think)].append(run)
     rows = []
     for (model, think), members in sorted(groups.items()):
         tasks = [t for r in members for t in r.graded(RIGID_LEVELS)]
@@ -138,8 +138,9 @@ def thinking_table(runs: list[Run]) -> list[dict[str, Any]]:
 
 
 def error_category_table(runs: list[Run]) -> list[dict[str, Any]]:
-    """Table 5: per model, graph-content error categories (once per task), proportions, means; levels 1-2."""
-    groups = _by_model(runs, RIGID_LEVELS)
+    """Table 5: per model, graph-content error categories (once per task), proportions, means; levels 1-2.
+    Paper texts only: an open text's graph content is not graded (``eval.chain.by_behaviour``)."""
+    groups = _by_model([r for r in runs if r.texts == "paper"], RIGID_LEVELS)
     rows = []
     for model, tasks in sorted(groups.items()):
         counts = {c: sum(1 for t in tasks if c in t.get("error_categories", [])) for c in CATEGORIES}
@@ -165,14 +166,14 @@ def topology_cause_table(runs: list[Run]) -> list[dict[str, Any]]:
     """Beside Table 5: why topology failed, per model, on every level graded by the system graph
     (the paper's rule fails an inert surplus item too; this table shows how much of the failure
     that is)."""
-    return topology_cause_rows(_by_model(runs, GRAPH_LEVELS))
+    return topology_cause_rows(_by_model([r for r in runs if r.texts == "paper"], GRAPH_LEVELS))
 
 
 def _by_model(runs: list[Run], levels: tuple[str, ...]) -> dict[str, list[dict[str, Any]]]:
     """Graded records of ``levels`` per model; a model with none of them has no entry."""
     groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
     for run in runs:
-        groups[run.model].extend(run.graded(levels))
+        groups[run.model_key].extend(run.graded(levels))
     return {model: tasks for model, tasks in groups.items() if tasks}
 
 
@@ -183,7 +184,7 @@ def series(runs: list[Run], axis: str, stage: str = "overall") -> dict[str, dict
     for run in runs:
         key = f"{run.temperature:g}" if axis == "temperature" else str(getattr(run, axis))
         if tasks := run.graded(RIGID_LEVELS):
-            out[run.model][key].extend(tasks)
+            out[run.model_key][key].extend(tasks)
     return {m: {k: stage_rate(v, stage) for k, v in sorted(d.items())} for m, d in sorted(out.items())}
 
 
@@ -228,8 +229,8 @@ def difficulty(runs: list[Run]) -> list[dict[str, Any]]:
     """Fig. 11: per task model, 1 - mean overall success over all runs; hardest first."""
     groups: dict[str, list[dict[str, Any]]] = defaultdict(list)
     for run in runs:
-        for t in run.graded():
-            groups[t["slug"]].append(t)
+        for t in run.graded():  # an open text's task is graded otherwise: a row of its own
+            groups[t["slug"] if t.get("texts", "paper") == "paper" else f"{t['slug']} [{t['texts']} text]"].append(t)
     rows = []
     for slug, tasks in groups.items():
         rate = stage_rate(tasks, "overall")
@@ -244,6 +245,8 @@ def behaviour_table(runs: list[Run]) -> tuple[list[dict[str, Any]], list[dict[st
     rows, disagreements = [], []
     labels = [run.label for run in runs]
     for run in runs:
+        if run.texts != "paper":  # an open text's verdict is its behaviour: nothing to set beside it
+            continue
         tasks = [t for t in run.graded(GRAPH_LEVELS) if isinstance(t.get("behaviour"), dict)
                  and t["behaviour"].get("passed") is not None]
         if not tasks:
@@ -258,3 +261,41 @@ def behaviour_table(runs: list[Run]) -> tuple[list[dict[str, Any]], list[dict[st
                            "behaviour": t["behaviour"].get("detail", "")}
                           for t in tasks if bool(t.get("overall")) != bool(t["behaviour"]["passed"])]
     return sorted(rows, key=lambda r: -(r["behaviour"].value or 0.0)), disagreements
+
+
+def texts_table(runs: list[Run]) -> list[dict[str, Any]]:
+    """Issue 36: per run setting (model, temperature, thinking, prompts) that has an open-text run,
+    the rates on the paper's texts and on the open ones side by side, levels 1-2. The paper's texts
+    with both verdicts (the paper's, what its rates count, and behaviour), the open texts' overall
+    (behaviour: ``eval.chain.by_behaviour``); ``points``: open overall minus the paper texts'
+    behaviour rate, the same grader on both. None of the cells when no run has the texts."""
+    if not any(run.texts != "paper" for run in runs):
+        return []
+    groups: dict[str, dict[str, list[dict[str, Any]]]] = defaultdict(lambda: defaultdict(list))
+    models: dict[str, str] = {}
+    for run in runs:
+        if tasks := run.graded(RIGID_LEVELS):
+            groups[run.setting_label][run.texts].extend(tasks)
+            models[run.setting_label] = run.model
+    rows = []
+    for setting, by_texts in groups.items():
+        paper, open_ = by_texts.get("paper", []), by_texts.get("open", [])
+        behaviour = [t for t in paper if isinstance(t.get("behaviour"), dict)
+                     and t["behaviour"].get("passed") is not None]
+        paper_behaviour = Rate(sum(1 for t in behaviour if t["behaviour"]["passed"]), len(behaviour))
+        open_overall = stage_rate(open_, "overall")
+        points = (None if open_overall.value is None or paper_behaviour.value is None
+                  else 100 * (open_overall.value - paper_behaviour.value))
+        rows.append({"setting": setting, "model": models[setting], "paper": stage_rate(paper, "overall"),
+                     "paper_behaviour": paper_behaviour, "open": open_overall, "points": points})
+    return sorted(rows, key=lambda r: -(r["open"].value or 0.0))
+
+
+TEXTS_HEADERS = ["run", "paper texts: overall", "paper texts: behaviour", "open texts: overall (behaviour)",
+                 "open − paper behaviour (points)"]
+
+
+def texts_cells(row: dict[str, Any]) -> list[str]:
+    """A row of ``texts_table`` as the report's table cells (``TEXTS_HEADERS``)."""
+    return [row["setting"], row["paper"].text(), row["paper_behaviour"].text(), row["open"].text(),
+            "–" if row["points"] is None else f"{row['points']:+.1f}"]

@@ -21,7 +21,7 @@ import numpy as np
 from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
 from meceng.catalog.component import Catalog
 from meceng.eval.behaviour import tolerance_for
-from meceng.eval.chain import Tolerances, Verdict, evaluate_rigid
+from meceng.eval.chain import Tolerances, Verdict, by_behaviour, evaluate_rigid
 from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
@@ -176,8 +176,9 @@ class Evaluator:
         self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None, code_error: str | None,
         files: dict[str, Path] | None = None,
     ) -> tuple[Verdict, Execution, Execution]:
-        """Run candidate and reference, grade with the level 1-2 chain. ``files``: the parts an
-        assembly loads; both programs get the same ones (the reference is then run uncached)."""
+        """Run candidate and reference, grade with the level 1-2 chain (an open-text task: by
+        behaviour, ``eval.chain.by_behaviour``). ``files``: the parts an assembly loads; both
+        programs get the same ones (the reference is then run uncached)."""
         if files:
             reference_task = asyncio.ensure_future(
                 self.execute(instance.reference_program, instance, check=False, files=files))
@@ -197,6 +198,8 @@ class Evaluator:
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
             behaviour=tolerance_for(instance.slug), refined=finer.motion,
         )
+        if instance.texts == "open":  # an engineer's words leave the writing free: graded by behaviour
+            verdict = by_behaviour(verdict)
         return verdict, candidate, reference
 
     async def evaluate_part(

@@ -62,7 +62,7 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
         return lost_record(instance, selection.infrastructure_error, _times(t0, time.perf_counter()),
                            selection=selection)
     question = (repair_prompt(code_template, instance.description, kind.catalog.context(selection.names),
-                              instance.draft.program) if repair else None)
+                              instance.draft.program, instance.texts) if repair else None)
     agent = None
     if settings.agent == "loop" or (repair and settings.repair_tools):
         toolbox = Toolbox(instance, kind.catalog, kind.limits, evaluator.pool, files=kind.files,

@@ -26,6 +26,7 @@ def _instance_fields(instance: TaskInstance) -> dict[str, Any]:
         "id": instance.task_id, "slug": instance.slug, "name": instance.name, "level": instance.level,
         "seed": instance.seed, "params": instance.params, "description": instance.description,
         "required_components": list(instance.required_components),
+        "texts": instance.texts,  # which task text: the paper's, or "open" (an engineer's words)
     }
     if instance.origin:  # a part drawn for an assembly: the key it is resumed and sorted by
         fields["origin"] = instance.origin

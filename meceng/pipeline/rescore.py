@@ -80,7 +80,8 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
             slug, seed = record["origin"].rsplit("@", 1)
             assembly = registry.get(slug).instance(int(seed))
             return next(part for _, part in assembly.parts if part.key == record_key(record))
-        return registry.get(record["slug"]).instance(record["seed"])
+        # the text the task had (records before issue 36 say none: the paper's)
+        return registry.get(record["slug"]).instance(record["seed"], texts=record.get("texts", "paper"))
 
     def kind_of(instance: TaskInstance, record: dict[str, Any]) -> TaskKind:
         if instance.kind == "part":

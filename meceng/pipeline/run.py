@@ -73,7 +73,12 @@ async def run_benchmark(
         raise ValueError(f"no task models for levels {settings.levels} / only {settings.only}")
     if settings.executor not in ("fork", "subprocess"):
         raise ValueError(f"unknown executor {settings.executor!r} (fork or subprocess)")
-    instances = registry.instances(models, settings.seed, settings.variations)
+    # open texts: only the models that have one; one named in --only that has none is refused
+    models, without_text = registry.with_texts(models, settings.texts, settings.levels, settings.only)
+    if without_text:
+        log.warning("task models without an open text are left out of this run", texts=settings.texts,
+                    left_out=without_text)
+    instances = registry.instances(models, settings.seed, settings.variations, settings.texts)
     own_backend = backend is None
     backend = backend or make_backend(settings.llm)  # a missing API key stops here, before any file is written
     started = time.time()
@@ -84,7 +89,8 @@ async def run_benchmark(
     lock.acquire()  # another process on this folder: RunBusy, nothing touched
     beat = asyncio.ensure_future(_heartbeat(lock))
     try:
-        return await _run_in(run_dir, settings, instances, backend, own_backend, started, shared, progress)
+        return await _run_in(run_dir, settings, instances, backend, own_backend, started, shared, progress,
+                             without_text)
     finally:
         beat.cancel()
         lock.release()
@@ -98,8 +104,9 @@ async def _heartbeat(lock: RunLock) -> None:
 
 async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInstance], backend: Backend,
                   own_backend: bool, started: float, shared: SharedServices | None,
-                  progress: ProgressFactory | None) -> Path:
-    """The run itself, in a folder this process holds the lock of."""
+                  progress: ProgressFactory | None, without_text: list[str] | None = None) -> Path:
+    """The run itself, in a folder this process holds the lock of; ``without_text``: the selected
+    models left out for want of the run's kind of text (said in run.json)."""
     writer = RunWriter(run_dir)
     if writer.finished and not settings.resume:
         raise ValueError(f"{run_dir} already holds a run; resume it with --resume {run_dir}")
@@ -193,7 +200,8 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
     # a part drawn for an assembly sits just before its assembly
     records.sort(key=lambda r: (order.get(r.get("origin") or record_key(r), 0), 0 if r.get("origin") else 1))
     extra = {"llm_calls": {"answered_from_cache": cache.hits, "requested": cache.misses},
-             "resumed_tasks": len(kept)}
+             "resumed_tasks": len(kept), "texts": settings.texts,
+             **({"without_text": without_text} if without_text else {})}
     try:
         path = await asyncio.to_thread(writer.finish, settings.to_json(), records, started,
                                        time.perf_counter() - t0, extra)

@@ -45,6 +45,9 @@ class RunSettings:
     part_select_template: str = DEFAULT_PART_SELECT
     part_code_template: str = DEFAULT_PART_CODE
     part_timeout_s: float = 300.0  # meshing + HCB of a part; the paper's parts take seconds
+    # which task text: "paper" (says how to write the program) or "open" (the system in an engineer's
+    # words, levels 1-2 only, graded by behaviour: issue 36)
+    texts: str = "paper"
 
     @classmethod
     def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
@@ -61,7 +64,7 @@ class RunSettings:
             executor=pipeline.get("executor", "fork"), agent=pipeline.get("agent", "pipeline"),
             max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
             repair_tools=pipeline.get("repair_tools", True), drafts_per_task=pipeline.get("drafts_per_task", 1),
-            part_timeout_s=pipeline.get("part_timeout_s", 300.0),
+            part_timeout_s=pipeline.get("part_timeout_s", 300.0), texts=pipeline.get("texts", "paper"),
             part_select_template=data["prompt"].get("part_select_template", DEFAULT_PART_SELECT),
             part_code_template=data["prompt"].get("part_code_template", DEFAULT_PART_CODE),
         )
@@ -76,6 +79,7 @@ class RunSettings:
                 "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
                 "solution_tolerance": self.solution_tolerance, "part_timeout_s": self.part_timeout_s,
+                "texts": self.texts,
             },
             "prompt": {"select_template": self.select_template, "code_template": self.code_template,
                        "part_select_template": self.part_select_template,

@@ -10,11 +10,14 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from meceng.tasks.assembly_base import AssemblyModel
-from meceng.tasks.base import TaskInstance, TaskModel
+from meceng.tasks.base import TEXTS, TaskInstance, TaskModel
 from meceng.tasks.part_base import PartModel
 
 _NOT_TASKS = {"base", "registry", "part_base", "assembly_base"}
 _PACKAGES = ("meceng.tasks", "meceng.tasks.parts", "meceng.tasks.assemblies")
+
+#: The levels whose task models have an open text (issue 36): the rigid ones.
+OPEN_TEXT_LEVELS = ("1", "2")
 
 #: Any kind of task model: they share id, name, level, slug and ``instance(seed)``.
 AnyModel = TaskModel | PartModel | AssemblyModel
@@ -91,9 +94,42 @@ class TaskRegistry:
             and (wanted is None or m.slug in wanted or str(m.id) in wanted)
         ]
 
-    def instances(self, models: Iterable[AnyModel], seed: int, variations: int) -> list[TaskInstance]:
-        """Variation k of every model uses seed ``seed + k``; order is model-major."""
-        return [m.instance(seed + k) for m in models for k in range(variations)]
+    def instances(self, models: Iterable[AnyModel], seed: int, variations: int,
+                  texts: str = "paper") -> list[TaskInstance]:
+        """Variation k of every model uses seed ``seed + k``; order is model-major. ``texts``: the
+        task text every instance gets (``"open"``: only level-1/2 models have one, see ``with_texts``)."""
+        if texts == "paper":
+            return [m.instance(seed + k) for m in models for k in range(variations)]
+        return [m.instance(seed + k, texts=texts) for m in models if isinstance(m, TaskModel)
+                for k in range(variations)]
+
+    def with_texts(self, models: list[AnyModel], texts: str, levels: Iterable[str],
+                   only: Iterable[str] = ()) -> tuple[list[AnyModel], list[str]]:
+        """The models that have a ``texts`` text, and the slugs of those left out (none for the
+        paper's texts). Refused with a ``ValueError`` saying why: an unknown kind of text, levels
+        that have no open text (parts and assemblies: 3a, 3b), a model named in ``only`` that has
+        none, or nothing left to run."""
+        if texts not in TEXTS:
+            raise ValueError(f"unknown texts {texts!r}: choose one of {', '.join(TEXTS)}")
+        if texts == "paper":
+            return list(models), []
+        without_levels = sorted({str(lv) for lv in levels} - set(OPEN_TEXT_LEVELS))
+        if without_levels:
+            which = (f"level {without_levels[0]} has" if len(without_levels) == 1
+                     else f"levels {', '.join(without_levels)} have")
+            raise ValueError(f"{which} no open texts (parts and assemblies; only levels "
+                             f"{', '.join(OPEN_TEXT_LEVELS)} do): run {'it' if len(without_levels) == 1 else 'them'} "
+                             "with --texts paper")
+        kept = [m for m in models if isinstance(m, TaskModel) and m.open_description.strip()]
+        missing = [m.slug for m in models if m not in kept]
+        wanted = {str(k) for k in only}
+        named = [m.slug for m in models if m.slug in missing and (m.slug in wanted or str(m.id) in wanted)]
+        if named:
+            raise ValueError(f"no open text yet for {', '.join(named)}: run {'it' if len(named) == 1 else 'them'} "
+                             "with --texts paper")
+        if not kept:
+            raise ValueError("none of the selected task models has an open text yet")
+        return kept, missing
 
 
 def discover() -> TaskRegistry:

@@ -13,19 +13,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from meceng.eval.chain import RIGID_STAGES
+from meceng.eval.chain import BEHAVIOUR_STAGE, RIGID_STAGES
 from meceng.eval.parts import PART_STAGES
 from meceng.jsonl import read_jsonl
 from meceng.pipeline.rundir import record_key
 from meceng.pipeline.traces import safe_key
 
 #: every stage name in display order (parts, assembly gates, the rigid chain); a record fills its own
-STAGE_ORDER = (*PART_STAGES, "parts_overall", "mbs_started", *RIGID_STAGES)
+STAGE_ORDER = (*PART_STAGES, "parts_overall", "mbs_started", *RIGID_STAGES, BEHAVIOUR_STAGE)
 STAGE_LABELS = {"choose_part_components": "pcomp", "interface_name_match": "iface", "material_match": "mat",
                 "mass_match": "mass", "mesh_match": "mesh", "eigenfrequencies_match": "eig",
                 "parts_overall": "parts", "mbs_started": "mbs", "choose_components": "comp",
                 "finished_assemble": "asm", "topology_match": "topo", "graph_content_match": "graph",
-                "solver_success": "solver", "solution_match": "sol"}
+                "solver_success": "solver", "solution_match": "sol", BEHAVIOUR_STAGE: "behav"}
 #: the index row's fields, in order (the page script reads them by these names)
 ROW_FIELDS = ("run", "level", "slug", "seed", "stages", "failure", "categories", "tokens", "llm_s", "eval_s",
               "href", "status", "origin", "detail", "id", "name", "rounds", "draft")
@@ -44,12 +44,18 @@ class ViewRun:
         return str(self.settings.get("llm", {}).get("model", "?"))
 
     @property
+    def texts(self) -> str:
+        """The run's task texts: "paper" (runs before issue 36 say none) or "open"."""
+        return str(self.settings.get("pipeline", {}).get("texts", "paper"))
+
+    @property
     def label(self) -> str:
         llm, prompt = self.settings.get("llm", {}), self.settings.get("prompt", {})
         agent = self.settings.get("pipeline", {}).get("agent", "pipeline")
         return (f"{self.model} T={llm.get('temperature', '?')} think={llm.get('think', '?')} "
                 f"{prompt.get('select_template', '?')}/{prompt.get('code_template', '?')}"
-                + (f" agent={agent}" if agent != "pipeline" else ""))
+                + (f" agent={agent}" if agent != "pipeline" else "")
+                + (f" texts={self.texts}" if self.texts != "paper" else ""))
 
 
 def find_runs(paths: list[Path]) -> list[Path]:
@@ -95,7 +101,7 @@ def stage_columns(runs: list[ViewRun]) -> list[str]:
 def _failure_detail(record: dict[str, Any]) -> str:
     if record.get("first_failure") == "infrastructure":
         return str(record.get("infrastructure_error") or "")[:200]
-    failed = next((s for s in record.get("stages", []) if s.get("passed") is False), None)
+    failed = next((s for s in record.get("stages", []) if s.get("passed") is False and s.get("required", True)), None)
     return "" if failed is None else str(failed.get("detail", ""))[:200]
 
 
@@ -104,7 +110,9 @@ def index_row(run_index: int, record: dict[str, Any], columns: dict[str, int]) -
     codes = ["."] * len(columns)
     for stage in record.get("stages", []):
         if stage["name"] in columns:
-            codes[columns[stage["name"]]] = {True: "P", False: "F"}.get(stage.get("passed"), "N")
+            # R: recorded but not required (an open text's writing stages, eval.chain.by_behaviour)
+            codes[columns[stage["name"]]] = ("R" if stage.get("required", True) is False
+                                             else {True: "P", False: "F"}.get(stage.get("passed"), "N"))
     timing, tokens = record.get("timing", {}), record.get("tokens", {})
     infra = record.get("first_failure") == "infrastructure"
     agent = record.get("agent") or {}
@@ -135,7 +143,7 @@ def index_data(runs: list[ViewRun]) -> dict[str, Any]:
     columns = {name: i for i, name in enumerate(stages)}
     return {
         "fields": list(ROW_FIELDS),
-        "runs": [{"label": label, "model": run.model, "path": str(run.path)}
+        "runs": [{"label": label, "model": run.model, "path": str(run.path), "texts": run.texts}
                  for label, run in zip(run_labels(runs), runs, strict=True)],
         "stages": stages,
         "stage_labels": [STAGE_LABELS.get(s, s[:6]) for s in stages],

@@ -23,7 +23,13 @@ SHOWN = {"id", "slug", "name", "level", "seed", "params", "description", "requir
          "overall", "first_failure", "error_categories", "differences", "solution_norm", "infrastructure_error",
          "selection", "generation", "execution", "reference_execution", "timing", "tokens", "files", "evaluator",
          "part", "parts", "agent", "traceback", "topology_causes", "repair",
-         "behaviour"}
+         "behaviour", "texts", "graded_by"}
+
+
+#: what each kind of task text is, in the page's words (issue 36)
+TEXT_WORDS = {"paper": "the paper's (says how to write the program; graded by the paper's stages)",
+              "open": "open: the system in an engineer's words (graded by behaviour; topology, graph content and "
+                      "solution not required)"}
 
 
 def _behaviour(block: dict[str, Any]) -> str:
@@ -75,8 +81,13 @@ def _kv(pairs: list[tuple[str, Any]]) -> str:
 
 
 def _stages(record: dict[str, Any]) -> str:
-    rows = "".join(f"<tr class='{status_of(s.get('passed'))}'><td>{esc(s['name'])}</td>"
-                   f"<td>{ {True: 'passed', False: 'FAILED'}.get(s.get('passed'), 'not evaluated')}</td>"
+    def result(s: dict[str, Any]) -> str:
+        if s.get("required", True) is False:  # an open text's writing stages: recorded, not graded
+            return "not required"
+        return {True: "passed", False: "FAILED"}.get(s.get("passed"), "not evaluated")
+
+    rows = "".join(f"<tr class='{status_of(s.get('passed') if s.get('required', True) else None)}'>"
+                   f"<td>{esc(s['name'])}</td><td>{result(s)}</td>"
                    f"<td class='detail'>{esc(s.get('detail', ''))}</td></tr>" for s in record.get("stages", []))
     if not rows:
         return "<p class='muted'>no stage was graded</p>"
@@ -230,6 +241,7 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
                     f"<h1>{esc(record.get('id'))} {esc(record.get('name', record['slug']))}, seed {esc(record['seed'])}"
                     f" <span class='badge {status}'>{esc(verdict)}</span></h1>",
                     _kv([("run", esc(run_label)), ("key", esc(key)), ("level", esc(record.get("level"))),
+                         ("task text", esc(TEXT_WORDS.get(record.get("texts", "paper"), record.get("texts")))),
                          ("error categories", esc(", ".join(record.get("error_categories", [])) or "none")),
                          ("solution norm", esc(_number(record.get("solution_norm")))),
                          ("tokens", esc(_pairs(record.get("tokens"), "{:d}"))),

@@ -103,7 +103,7 @@
       case "categories": return r[F.categories];
       default: {  // a stage column: failed first when ascending
         var s = r[F.stages].charAt(Number(state.sort.slice(1)));
-        return { F: 0, N: 1, P: 2, ".": 3 }[s];
+        return { F: 0, N: 1, R: 2, P: 3, ".": 4 }[s];
       }
     }
   }
@@ -133,7 +133,9 @@
     cells.push("<td><a href='" + esc(r[F.href]) + "'>" + esc(r[F.slug]) + "</a>" +
                (r[F.origin] ? " <span class='muted'>for " + esc(r[F.origin]) + "</span>" : "") +
                (r[F.rounds] >= 0 ? " <span class='muted'>agent, " + r[F.rounds] + " rounds</span>" : "") +
-               (r[F.draft] ? " <span class='muted'>draft " + esc(r[F.draft]) + "</span>" : "") + "</td>");
+               (r[F.draft] ? " <span class='muted'>draft " + esc(r[F.draft]) + "</span>" : "") +
+               (run.texts && run.texts !== "paper" ? " <span class='texts'>" + esc(run.texts) + " text</span>" : "") +
+               "</td>");
     cells.push("<td>" + r[F.seed] + "</td>");
     var codes = r[F.stages];
     for (var k = 0; k < codes.length; k++) {
