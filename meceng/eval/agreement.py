@@ -57,8 +57,8 @@ class Agreement:
 
     @property
     def pairs(self) -> tuple[tuple[int, int], ...]:
-        """(A's object, B's object) of every matched pair."""
-        return tuple((a, b) for b, a in self.verdict.matching) if self.verdict else ()
+        """(A's object, B's object) of every matched pair, in A's order."""
+        return tuple(sorted((a, b) for b, a in self.verdict.matching)) if self.verdict else ()
 
     def to_json(self) -> dict[str, Any]:
         return {"agree": self.agree, "detail": self.detail,
