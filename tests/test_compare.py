@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from fake_anthropic import FakeAnthropic, anthropic_reply
 from fake_ollama import FakeOllama, chat_reply, openai_reply
-from test_api_backends import SENTINEL, cli_run, gold_answer, instances, prompt_of
+from test_api_backends import SENTINEL, gold_answer, instances, prompt_of
 from test_behaviour import T, body, circle, motion
 
 from meceng.agents.loop import agent_prompt
@@ -25,6 +25,8 @@ from meceng.agents.steps import generation_prompt
 from meceng.agents.toolbox import Toolbox
 from meceng.catalog.catalogs import rigid_catalog
 from meceng.eval.agreement import compare_motions
+from meceng.llm.types import LLMSettings
+from meceng.pipeline import RunSettings, run_benchmark
 from meceng.tasks.alternatives import ALTERNATIVES
 from meceng.tasks.registry import default_registry
 from meceng.viewer.site import build_site
@@ -179,17 +181,21 @@ def tool_answer(backend_name: str, body: dict[str, Any]) -> str:
     return str(last["content"])
 
 
-async def test_compare_through_the_three_apis_is_answered_recorded_and_shown(tmp_path: Path) -> None:
+async def test_compare_through_the_three_apis_is_answered_recorded_and_shown(tmp_path: Path,
+                                                                            monkeypatch: pytest.MonkeyPatch) -> None:
     known = instances((SLUG,))
+    monkeypatch.setenv("ANTHROPIC_API_KEY", SENTINEL)
+    monkeypatch.setenv("OPENAI_API_KEY", SENTINEL)
     async with (FakeAnthropic(compare_script(known, "anthropic"), key=SENTINEL) as claude,
                 FakeOllama(compare_script(known, "openai")) as gpt,
                 FakeOllama(compare_script(known, "ollama")) as local):
-        ran = await asyncio.gather(*(
-            cli_run(tmp_path, name, name, url, "--agent", "loop", only=SLUG)
-            for name, url in (("anthropic", claude.url), ("openai", gpt.url + "/v1"), ("ollama", local.url))))
         servers = {"anthropic": claude, "openai": gpt, "ollama": local}
-        for (code, output), name in zip(ran, servers, strict=True):
-            assert code == 0, output
+        urls = {"anthropic": claude.url, "openai": gpt.url + "/v1", "ollama": local.url}
+        await asyncio.gather(*(run_benchmark(RunSettings(
+            llm=LLMSettings(model="claude-x", backend=name, hosts=(urls[name],), backoff_s=0.01), only=(SLUG,),
+            variations=1, out=tmp_path, run_name=name, progress=False, agent="loop", max_rounds=3))
+            for name in servers))
+        for name in servers:
             offered = servers[name].requests[-1]["tools"]
             assert "compare" in json.dumps(offered)
             answer = tool_answer(name, servers[name].requests[-1])
