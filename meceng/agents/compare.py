@@ -70,12 +70,18 @@ class _Names:
             return self.label(index)
         return f"{self.label(index)} (mass {num(motion.mass)}, starts at {vec(motion.p[0])})"
 
-    def position(self, index: int, t: float) -> str:
+    def state(self, index: int, t: float, quantity: str) -> str:
+        """Where the body is at ``t``, and the quantity that parted where it is not the position."""
         motion = self.bodies.get(index)
         if motion is None or not len(motion.t):
-            return "?"
+            return f"{self.label(index)}: no state"
         k = int(np.argmin(np.abs(motion.t - t)))
-        return f"{self.label(index)} at {vec(motion.p[k])}"
+        text = f"{self.label(index)} at {vec(motion.p[k])}"
+        if quantity == "velocity":
+            text += f" with velocity {vec(motion.v[k])}"
+        elif quantity == "angular_velocity" and motion.w is not None:
+            text += f" with angular velocity {vec(motion.w[k])}"
+        return text
 
 
 def _deviation(d: Deviation, names: tuple[_Names, _Names]) -> str:
@@ -121,8 +127,8 @@ def compare_words(agreement: Agreement, a: Execution, b: Execution,
     lines = [_head(agreement, names), *failures]
     first = verdict.first_divergence
     if first is not None:
-        lines.append(f"  then: {names[0].position(first.body, first.time)}, "
-                     f"{names[1].position(first.candidate_body, first.time)}")
+        lines.append(f"  then: {names[0].state(first.body, first.time, first.quantity)}; "
+                     f"{names[1].state(first.candidate_body, first.time, first.quantity)}")
     lines.append(f"bodies matched by mass, inertia and motion ({len(agreement.pairs)} pairs, A ↔ B):")
     pairs = [f"  {names[0].full(x)} ↔ {names[1].full(y)}{_unlike(names, x, y)}" for x, y in agreement.pairs]
     lines += pairs[:PAIR_LINES]
