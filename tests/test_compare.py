@@ -66,6 +66,8 @@ def test_the_agreement_is_symmetric_and_a_program_that_blows_up_does_not_loosen_
     blown = compare_motions(a, motion(body(7, 2.0, None, circle(1.0, np.pi)), body(3, 1.0, None, wild)))
     assert blown.agree is False and abs(blown.verdict.first_divergence.time - 1.5) <= 0.021
     assert compare_motions(a, None).agree is None and "B" in compare_motions(a, None).detail
+    nothing = {**b, "t": T[:0], "states": b["states"][:0]}  # a recorder that gave up before its first sample
+    assert compare_motions(nothing, a).agree is None and "of A" in compare_motions(nothing, a).detail
     # a record that stops early agrees with nothing, whatever it did until then
     short = compare_motions(a, {**b, "t": T[:50], "states": b["states"][:50]})
     assert short.agree is False and short.ends == (2.0, float(T[49])) and short.verdict.passed

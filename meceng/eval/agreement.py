@@ -11,8 +11,9 @@ angular velocities and principal axes compared at the same sample times) made sy
   size, travel, speed). For two programs that agree the two scales are the same to within that
   very tolerance, so the choice does not decide an agreement; where they part, the smaller keeps
   a program that flies away or turns NaN from widening the test of the other, and finds the
-  first divergence earliest. A program A against B gets the same answer as B against A, except
-  that A's bodies are named first.
+  first divergence earliest. The tolerances are the same with A and B swapped (scales and step
+  errors are taken from both); what stays A's is the sample times reported and which principal
+  axes are compared (A's distinct ones: a body symmetric in A has no axis to compare).
 - **Step error.** The behaviour verdict allows 3 x the ground truth's own step error (the same
   program with twice the steps). Here each side may have its own, the larger counts per matched
   quantity; the caller passes the finer runs (``finer_a``, ``finer_b``) or not. A finer run can
@@ -116,6 +117,9 @@ def compare_motions(motion_a: dict[str, Any] | None, motion_b: dict[str, Any] | 
     missing = [name for name, bodies in (("A", a), ("B", b)) if bodies is None]
     if a is None or b is None:
         return Agreement(None, f"not compared: no motion of {' and '.join(missing)} (never reached its solve)")
+    empty = [name for name, bodies in (("A", a), ("B", b)) if bodies and not len(bodies[0].t)]
+    if empty:  # the recorder gave up before its first sample (a warning of the run)
+        return Agreement(None, f"not compared: no motion sample of {' and '.join(empty)}")
     ends = (_end(a), _end(b))
     if not a and not b:
         return Agreement(True, "neither program has a moving body", ends=ends)
