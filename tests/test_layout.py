@@ -19,7 +19,7 @@ ALLOWED: dict[str, set[str]] = {
     "catalog": {"tasks"},
     "inspect": {"catalog"},
     "eval": {"tools"},  # the Execution type only (checked below)
-    "agents": {"inspect", "catalog", "llm", "tools", "tasks"},
+    "agents": {"inspect", "catalog", "llm", "tools", "tasks", "eval"},  # eval: compare's agreement of two programs
     "pipeline": {"agents", "inspect", "catalog", "llm", "eval", "tools", "tasks"},
     "viewer": {"pipeline", "eval", "inspect", "tasks"},
 }

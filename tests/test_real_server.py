@@ -29,11 +29,15 @@ import pytest
 from llama_server import SERVED_NAME, LlamaServer, servers_missing, write_tiny_llama
 from records import normalized
 
+from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import rigid_catalog
 from meceng.llm.backend_openai import OpenAIBackend
-from meceng.llm.messages import user_messages
+from meceng.llm.messages import assistant_message, tool_message, user_messages
 from meceng.llm.scheduler import Endpoint
-from meceng.llm.types import ChatRequest, ContextExceeded, LLMSettings
+from meceng.llm.types import ChatRequest, ChatResponse, ContextExceeded, LLMSettings, ToolCall
 from meceng.pipeline import RunSettings, run_benchmark
+from meceng.tasks.alternatives import ALTERNATIVES
+from meceng.tasks.registry import default_registry
 
 MISSING = servers_missing()
 if MISSING is not None:
@@ -165,6 +169,36 @@ async def test_an_agent_run_calls_tools_through_the_servers_chat_template(server
         assert call["tool_calls"][0]["id"] and call["meta"]["truncated"]  # cut by the limit mid-arguments
         assert result["role"] == "tool" and "not valid JSON" in result["content"]
         assert all(m["completion_tokens"] <= LIMIT for m in answers(task))
+
+
+async def test_a_compare_call_is_answered_recorded_and_its_answer_read_by_the_server(server: LlamaServer,
+                                                                                        tmp_path: Path) -> None:
+    """The tiny model, made to call ``compare``, cuts its arguments at the limit: the call is
+    answered (not valid JSON) and recorded like every tool call. Then a conversation that carries a
+    real compare (the ground truth against itself built another way) and its answer: the server's
+    tool handling and template take both, and it answers."""
+    backend = WatchedBackend(llm(server.url), force_tool="compare")
+    settings = RunSettings(llm=backend.settings, only=SLUGS[:1], variations=1, out=tmp_path, run_name="compare",
+                           progress=False, workers=1, agent="loop", max_rounds=2)
+    run = json.loads((await run_benchmark(settings, backend=backend)).read_text())
+    (task,) = run["tasks"]
+    assert task["agent"]["tool_calls"] == {"compare": 1} and run["summary"]["infrastructure_failures"] == 0
+    call, result = task["agent"]["transcript"][1], task["agent"]["transcript"][2]
+    assert call["tool_calls"][0]["name"] == "compare" and call["meta"]["truncated"]
+    assert result["role"] == "tool" and result["name"] == "compare" and "not valid JSON" in result["content"]
+
+    instance = default_registry().get(SLUGS[0]).instance(0)
+    other = next(a for a in ALTERNATIVES if a.slug == SLUGS[0]).program(instance)
+    toolbox = Toolbox(instance, rigid_catalog())
+    arguments = {"code_a": instance.reference_program, "code_b": other}
+    answer = (await toolbox.call("compare", arguments)).text
+    assert answer.startswith("compare: A and B move alike")
+    compare_call = ToolCall("compare", arguments, "call_1")
+    messages = (*user_messages("Is my program right?"),
+                assistant_message(ChatResponse("", tool_calls=(compare_call,))), tool_message(compare_call, answer))
+    reply = await backend.chat(ChatRequest(messages, "code", instance.key, tools=toolbox.schemas))
+    await backend.aclose()
+    assert reply.completion_tokens > 0 and reply.prompt_tokens > len(answer)  # one token a byte: the answer was read
 
 
 @pytest.mark.slow

@@ -26,10 +26,13 @@ AGENT_NOTE = """
 You can call tools before you answer: `simulate(code)` runs a complete program and reports what it
 built (every body, connector and load in global coordinates) and how it moved; `snapshot(code)`
 draws the system at t = 0 and at the end (the tool draws it: your program itself still has no
-visualization); `self_check(code)` looks for problems; `list_components()` and
+visualization); `self_check(code)` looks for problems; `compare(code_a, code_b)` runs two programs
+and says whether they move alike, and where and when they part; `list_components()` and
 `component_docs(names)` give documentation. Test your program, compare what it built with the
 description, repair it if needed, and then give the final program in a single ```python code block
-without calling a tool.
+without calling a tool. There is no reference solution to check against; one check that needs none
+is to build the system a second, independent way (joints instead of constraints, another reference
+frame or body order) and `compare` the two: two programs that part cannot both be right.
 """
 
 PART_AGENT_NOTE = """
@@ -129,7 +132,9 @@ async def run_agent(
             break
         messages.append(assistant_message(response))
         for call in response.tool_calls:
-            code = call.arguments.get("code") if isinstance(call.arguments, dict) else None
+            # compare's program A is the program in progress (B is the model's second way of building it)
+            code = (call.arguments.get("code") or call.arguments.get("code_a")) if isinstance(call.arguments, dict) \
+                else None
             if isinstance(code, str) and code.strip():
                 first_code = first_code or code
                 last_code = code

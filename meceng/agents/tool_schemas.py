@@ -48,6 +48,20 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
     },
     {
+        "name": "compare",
+        "description": ("Run two complete programs for the same system and compare how they move, with no "
+                        "reference solution: A, your program, and B, the same system built another way (joints "
+                        "instead of constraints, another reference frame or body order). Their bodies are matched "
+                        "by mass, inertia and motion; centres of mass, velocities, angular velocities and principal "
+                        "axes are compared at about 200 times over the run, within 0.1 % of the motion's scale. "
+                        "Answers in words: which bodies were matched, the largest deviation, and where and when the "
+                        "motions part. Two programs that part cannot both be right."),
+        "parameters": {"type": "object", "properties": {
+            "code_a": {"type": "string", "description": "program A: your program, complete, as you would answer it"},
+            "code_b": {"type": "string", "description": "program B: the same system built another way, complete"}},
+            "required": ["code_a", "code_b"]},
+    },
+    {
         "name": "list_components",
         "description": "The catalog of simulation components with one line each.",
         "parameters": {"type": "object", "properties": {}},

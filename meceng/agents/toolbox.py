@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from meceng.agents.compare import compare_programs
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.prompts import neutral
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
@@ -29,6 +30,7 @@ from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
+from meceng.tools.recording import REFINE, run_recorded
 from meceng.tools.warm import WarmPool
 
 MAX_TEXT = 1500
@@ -78,6 +80,8 @@ class Toolbox:
                                                       _times(arguments.get("times"))))
             if name == "snapshot":
                 return await self.snapshot(str(arguments["code"]), arguments.get("time"))
+            if name == "compare":
+                return ToolResult(await self.compare(str(arguments["code_a"]), str(arguments["code_b"])))
             if name == "self_check":
                 return ToolResult(self_check_words(await self.self_check(str(arguments["code"]))))
             if name == "list_components":
@@ -144,6 +148,18 @@ class Toolbox:
         limits = (self.limits if inspect_times is None
                   else replace(self.limits, inspect_times=inspect_times, inspect_loads=True))
         return await execute(code, block, limits, pool=self.pool, files=self.files)
+
+    async def _recorded(self, code: str, finer: bool = False) -> Execution:
+        """The program with its bodies' motion recorded (``compare``): the description's end time and
+        steps, or ``REFINE`` times the steps for the program's own step error."""
+        sim = self.instance.sim
+        if sim is None:
+            raise LookupError("no simulation for a part")
+        block = SimSettings(sim.end_time, sim.steps * (REFINE if finer else 1)).block()
+        return await run_recorded(code, block, sim.end_time, self.limits, pool=self.pool, files=self.files)
+
+    async def compare(self, code_a: str, code_b: str) -> str:
+        return await compare_programs(self._recorded, code_a, code_b, lambda text: _trim(text, 600))
 
     def _end_time(self) -> float:
         return self.instance.sim.end_time if self.instance.sim is not None else 0.0

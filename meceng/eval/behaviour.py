@@ -164,21 +164,31 @@ def _point_deviation(candidate: BodyMotion, truth: BodyMotion, n: int, near: flo
     return worst
 
 
-def _step_allowances(refined: dict[str, Any] | None, truths: list[BodyMotion], n: int, scale: Scales,
+def _step_allowances(refined: list[BodyMotion] | None, bodies: list[BodyMotion], n: int, scale: Scales,
                      relative: float) -> dict[tuple[int, str], float]:
-    """What the ground truth's own time stepping moves each of its quantities by (the same program
-    with ``REFINE`` times the steps, matched by object number), times ``STEP_MARGIN``: a program built
+    """What a program's own time stepping moves each of its quantities by (the same program with
+    ``REFINE`` times the steps, matched by object number), times ``STEP_MARGIN``: a program built
     another way has a step error of its own, of that size."""
-    finer = {b.index: b for b in read_bodies(refined) or []}
+    finer = {b.index: b for b in refined or []}
     out: dict[tuple[int, str], float] = {}
-    for truth in truths:
-        other = finer.get(truth.index)
+    for body in bodies:
+        other = finer.get(body.index)
         if other is None or len(other.t) < n:
             continue
-        for quantity, values, _ in _pair_errors(other, truth, n, scale, relative):
+        for quantity, values, _ in _pair_errors(other, body, n, scale, relative):
             if np.all(np.isfinite(values)):
-                out[(truth.index, quantity)] = STEP_MARGIN * float(np.max(values))
+                out[(body.index, quantity)] = STEP_MARGIN * float(np.max(values))
     return out
+
+
+@dataclass(frozen=True)
+class Words:
+    """How a verdict's ``detail`` names the two sides (the behaviour verdict: candidate and ground
+    truth; the agreement of two programs: B and A)."""
+
+    candidate: str = "the candidate"
+    truth: str = "the ground truth"
+    short: str = "candidate"  # the candidate's bodies: "(candidate's 3)"
 
 
 def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dict[str, Any] | None,
@@ -193,16 +203,27 @@ def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dic
     candidates = read_bodies(candidate_motion)
     if candidates is None:
         return BehaviourVerdict(False, "no motion: the candidate's system was not simulated")
-    scale = scales(truths)
+    return compare_bodies(candidates, truths, scales(truths), tol, refined_truths=read_bodies(refined))
+
+
+def compare_bodies(candidates: list[BodyMotion], truths: list[BodyMotion], scale: Scales,
+                   tol: BehaviourTolerance, refined_truths: list[BodyMotion] | None = None,
+                   refined_candidates: list[BodyMotion] | None = None, words: Words = Words()
+                   ) -> BehaviourVerdict:
+    """The comparison itself, on bodies already read and with the scales every tolerance is a
+    fraction of given by the caller (the behaviour verdict: the ground truth's; two programs of
+    the same model: the larger of the two, ``eval/agreement.py``). ``refined_*``: the same side
+    with more steps, whose step error widens a tolerance (each side's own, the larger counts).
+    Samples are taken at the truth's times; ``Deviation.body`` is the truth's object number."""
     if not truths:
         passed = not candidates
-        return BehaviourVerdict(passed, "no bodies in the ground truth" + ("" if passed else
-                                f"; the candidate has {len(candidates)}"), scales=scale, relative=tol.relative)
+        return BehaviourVerdict(passed, f"no bodies in {words.truth}" + ("" if passed else
+                                f"; {words.candidate} has {len(candidates)}"), scales=scale, relative=tol.relative)
     pairs = match_bodies(candidates, truths, scale)
     matching = tuple((candidates[c].index, truths[g].index) for c, g in pairs)
     common = dict(matching=matching, scales=scale, relative=tol.relative)
     if len(candidates) != len(truths):
-        return BehaviourVerdict(False, f"{len(candidates)} bodies move, the ground truth has {len(truths)}", **common)
+        return BehaviourVerdict(False, f"{len(candidates)} bodies move, {words.truth} has {len(truths)}", **common)
     times = truths[0].t
     limit = float(times[-1]) if len(times) else 0.0
     if tol.horizon is not None:
@@ -211,15 +232,16 @@ def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dic
     n = min(n_truth, len(candidates[0].t))
     if n < n_truth:
         reached = float(candidates[0].t[-1]) if len(candidates[0].t) else 0.0
-        return BehaviourVerdict(False, f"the candidate's motion ends at t = {reached:.4g} s of {limit:.4g} s",
+        return BehaviourVerdict(False, f"{words.candidate}'s motion ends at t = {reached:.4g} s of {limit:.4g} s",
                                 compared_until=limit, **common)
     deviations: list[Deviation] = []
     first: Deviation | None = None
-    allowances = _step_allowances(refined, truths, n, scale, tol.relative)
+    allowances = _step_allowances(refined_truths, truths, n, scale, tol.relative)
+    own = _step_allowances(refined_candidates, candidates, n, scale, tol.relative)
     for c, g in pairs:
         cand, truth = candidates[c], truths[g]
         for quantity, values, allowed in _pair_errors(cand, truth, n, scale, tol.relative):
-            allowed = max(allowed, allowances.get((truth.index, quantity), 0.0))
+            allowed = max(allowed, allowances.get((truth.index, quantity), 0.0), own.get((cand.index, quantity), 0.0))
             bad = ~np.isfinite(values)
             values = np.where(bad, np.inf, values)
             k = int(np.argmax(values))
@@ -236,9 +258,11 @@ def compare_behaviour(candidate_motion: dict[str, Any] | None, truth_motion: dic
                   f"{largest.ratio:.3g} of its tolerance)" if largest else "nothing moves")
     else:
         assert first is not None
-        detail = (f"motions part at t = {first.time:.4g} s: {first.quantity} of body {first.body} (candidate's "
-                  f"{first.candidate_body}) off by {first.value:.3g} > {first.tolerance:.3g}")
+        detail = (f"motions part at t = {first.time:.4g} s: {first.quantity} of body {first.body} "
+                  f"({words.short}'s {first.candidate_body}) off by {first.value:.3g} > {first.tolerance:.3g}")
     widened = sorted({f"{q} of body {b}" for (b, q), v in allowances.items()
-                      if any(d.body == b and d.quantity == q and d.tolerance == v for d in deviations)})
+                      if any(d.body == b and d.quantity == q and d.tolerance == v for d in deviations)}
+                     | {f"{q} of {words.short}'s body {b}" for (b, q), v in own.items()
+                        if any(d.candidate_body == b and d.quantity == q and d.tolerance == v for d in deviations)})
     return BehaviourVerdict(passed, detail, largest=largest, first_divergence=first, compared_until=limit,
                             deviations=tuple(deviations), widened=tuple(widened), **common)

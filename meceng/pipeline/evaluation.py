@@ -27,16 +27,13 @@ from meceng.tasks.base import TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
+from meceng.tools.recording import MOTION_SAMPLES, REFINE, recording
 from meceng.tools.warm import WarmPool
 
 from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
 
-#: Samples of the bodies' motion per execution (fewer when a system has many bodies:
-#: ``tools/motion.MOTION_BUDGET``).
-MOTION_SAMPLES = 201
-#: The ground truth's own time-stepping error is measured against a run with this many times the steps.
-REFINE = 2
+__all__ = ["MOTION_SAMPLES", "REFINE", "Evaluator", "ReferenceCache", "not_run", "refined"]
 
 
 class ReferenceCache:
@@ -126,8 +123,8 @@ class Evaluator:
         """The limits a graded level 1-2/3b program runs under: the states at t = 0 and at the end
         (the viewer's pictures of the system) and every body's motion on a grid (the behaviour
         verdict); reading them does not touch the solution."""
-        return replace(self.limits, inspect_times=(instance.sim.end_time,),
-                       motion_grid=(instance.sim.end_time, MOTION_SAMPLES))
+        return recording(replace(self.limits, inspect_times=(instance.sim.end_time,)), instance.sim.end_time,
+                         MOTION_SAMPLES)
 
     async def execute(self, program: str, instance: TaskInstance, check: bool,
                       files: dict[str, Path] | None = None) -> Execution:

@@ -176,6 +176,9 @@ def _answer(step: dict[str, Any], title: str) -> str:
     return f"<h3>{esc(title)}</h3>" + "".join(parts)
 
 
+_CODE_ARGUMENTS = (("code", "code"), ("code_a", "program A"), ("code_b", "program B"))
+
+
 def _chat(agent: dict[str, Any]) -> str:
     """The agent's conversation round by round: its messages, tool calls and the tool results."""
     calls = ", ".join(f"{name} ×{n}" for name, n in (agent.get("tool_calls") or {}).items()) or "none"
@@ -196,12 +199,13 @@ def _chat(agent: dict[str, Any]) -> str:
         elif message.get("content"):
             body.append(_pre(message.get("content")))
         for call in message.get("tool_calls") or []:
-            args = call.get("arguments") or {}
-            code = args.pop("code", None) if isinstance(args, dict) else None
+            args = dict(call.get("arguments") or {}) if isinstance(call.get("arguments"), dict) else {}
+            # a program is shown folded (compare has two: A and B), the other arguments inline
+            codes = [(title, args.pop(key)) for key, title in _CODE_ARGUMENTS if isinstance(args.get(key), str)]
             body.append(f"<div class='call'>calls <b>{esc(call.get('name'))}</b>"
                         + (f" {esc(json.dumps(args))}" if args else "") + "</div>")
-            if code:
-                body.append(_details(f"code ({len(code.splitlines())} lines)", _pre(code)))
+            for title, code in codes:
+                body.append(_details(f"{title} ({len(code.splitlines())} lines)", _pre(code)))
         for picture in message.get("images") or []:  # the record keeps a picture's size, not the picture
             body.append(f"<div class='muted'>a picture went to the model ({esc(picture)})</div>")
         label = f"tool result: {message.get('name', '')}" if role == "tool" else role
