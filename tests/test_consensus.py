@@ -185,3 +185,24 @@ def test_consensus_is_refused_for_flexible_levels(tmp_path: Path) -> None:
 
     with pytest.raises(ValueError, match="levels 1 and 2"):
         asyncio.run(run_benchmark(settings(tmp_path, "scripted:p=1", "flex", levels=("3a",), only=())))
+
+
+def test_the_viewer_shows_the_groups_the_answer_and_each_samples_verdicts() -> None:
+    from meceng.viewer.pages import task_page
+
+    block = {"k": 3, "counted": 3, "chosen": 0, "confidence": 0.6667, "groups": [[0, 2], [1]],
+             "agreements": [{"a": 0, "b": 1, "agree": False, "detail": "motions part at t = 0.01 s"}],
+             "samples": [{"index": 0, "seed": 42, "lost": None, "group": 0, "code": "x = 1\n", "endpoint": "scripted: "
+                          "reference", "ran": True, "overall": True, "first_failure": None, "behaviour_passed": True},
+                         {"index": 1, "seed": 43, "lost": None, "group": 1, "code": "x = 2\n", "endpoint": "scripted: "
+                          "draft mass [inertia and mass]", "ran": True, "overall": False,
+                          "first_failure": "graph_content_match", "behaviour_passed": False},
+                         {"index": 2, "seed": 44, "lost": None, "group": 0, "code": "x = 1\n", "endpoint": "scripted: "
+                          "reference", "ran": True, "overall": True, "first_failure": None, "behaviour_passed": True}]}
+    page = task_page({"slug": "s", "seed": 0, "overall": True, "consensus": block}, run_label="r", root="../",
+                     program=None, reference=None, file_links={}, images={}, neighbours=(None, None))
+    section = page.split("id='consensus'")[1]
+    assert "group 1: 2 samples" in section and "group 2: 1 sample<" in section and "#0 ← answer" in section
+    assert "failed at graph_content_match" in section and "motions part at t = 0.01 s" in section
+    assert "sample #1 beside the answer (1 changed line(s))" in section
+    assert "Other fields" not in page  # the block is shown, not dumped
