@@ -79,9 +79,10 @@ class Study:
     variations: int = 20
     seed: int = 0
     description: str = ""
-    agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark
+    agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark; "consensus"
     repair_tools: bool = True
     drafts_per_task: int = 1
+    samples: int = 5  # agent = "consensus": independent programs per task
 
 
 @dataclass(frozen=True)
@@ -118,6 +119,7 @@ class GridPoint:
     agent: str = "pipeline"
     repair_tools: bool = True
     drafts_per_task: int = 1
+    samples: int = 5
 
     @property
     def default_sampling(self) -> bool:
@@ -150,6 +152,8 @@ class GridPoint:
             text += "_vision"
         if self.agent == "repair":
             text += f"_repair-tools-{'on' if self.repair_tools else 'off'}-d{self.drafts_per_task}"
+        elif self.agent == "consensus":
+            text += f"_consensus-k{self.samples}"
         elif self.agent != "pipeline":
             text += f"_agent-{self.agent}"
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
@@ -175,8 +179,9 @@ def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
         raise ValueError(f"{where}: unknown keys {sorted(unknown)}")
 
 
-SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task"}
-AGENTS = ("pipeline", "loop", "repair")
+SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task",
+              "samples"}
+AGENTS = ("pipeline", "loop", "repair", "consensus")
 GRID_KEYS = {"temperature", "think", "select_template", "code_template"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
@@ -192,9 +197,11 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
     grid = {**defaults.get("grid", {}), **data.get("grid", {})}
     _check_keys(f"study {name} grid", grid, GRID_KEYS)
     merged = {**defaults, **data}
+    # consensus needs samples that differ: sampled at 0.7 unless the grid says otherwise
+    default_t = 0.7 if merged.get("agent") == "consensus" else 0.0
     return Study(
         name=name, models=models,
-        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [0.0]))),
+        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [default_t]))),
         thinks=_tuple(grid.get("think", [False])),
         select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
         code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
@@ -203,7 +210,7 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
         description=str(data.get("description", "")), agent=_agent(name, merged.get("agent", "pipeline")),
         repair_tools=_tools(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
-    )
+        samples=int(merged.get("samples", 5)))
 
 
 def _agent(study: str, value: Any) -> str:
@@ -267,7 +274,8 @@ def study_points(study: Study) -> list[GridPoint]:
     for model, temperature, think, select, code in itertools.product(
             study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates):
         point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
-                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task)
+                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task,
+                          study.samples)
         points.setdefault(point.name, point)
     return list(points.values())
 

@@ -206,3 +206,14 @@ def test_the_viewer_shows_the_groups_the_answer_and_each_samples_verdicts() -> N
     assert "failed at graph_content_match" in section and "motions part at t = 0.01 s" in section
     assert "sample #1 beside the answer (1 changed line(s))" in section
     assert "Other fields" not in page  # the block is shown, not dumped
+
+
+def test_a_sweep_study_asks_for_consensus_at_a_sampling_temperature(tmp_path: Path) -> None:
+    from meceng.sweep import load_spec, study_points
+
+    spec = tmp_path / "consensus.toml"
+    spec.write_text('[[models]]\nname = "qwen3:8b"\n[[studies]]\nname = "vote"\nagent = "consensus"\nsamples = 3\n'
+                    '[[studies]]\nname = "greedy"\nagent = "consensus"\ngrid.temperature = [0.0]\n')
+    vote, greedy = (study_points(s)[0] for s in load_spec(spec).studies)
+    assert vote.name.endswith("_consensus-k3") and vote.samples == 3 and vote.llm().temperature == 0.7
+    assert greedy.name.endswith("_consensus-k5") and greedy.llm().temperature == 0.0
