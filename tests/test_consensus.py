@@ -41,12 +41,22 @@ def test_equal_motions_group_a_faulty_one_does_not_and_the_largest_group_answers
     assert consensus_of([faulty, good, good, swing()], ["b", "x", "y", "y"], [False] * 4).chosen == 2
 
 
-def test_agreement_is_asked_both_ways() -> None:
-    """Tolerances are fractions of the motion in the truth's role: a body at rest 'agrees' with a
-    barely moving one in one direction only, and that is no agreement."""
-    rest, creep = swing(radius=0.0), swing(radius=1e-3)
-    assert not motions_agree(rest, creep)[0] and not motions_agree(creep, rest)[0]
-    assert motions_agree(swing(), swing())[0]
+def test_agreement_is_asked_both_ways(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Tolerances are fractions of the scales of the motion in the truth's role, so the comparison
+    is not symmetric: two samples agree only when it passes with either in that role."""
+    import meceng.eval.consensus as consensus
+    from meceng.eval.behaviour import BehaviourVerdict
+
+    asked: list[tuple[str, str]] = []
+
+    def one_way(candidate: dict, truth: dict, tolerance: Any = None) -> BehaviourVerdict:
+        asked.append((candidate["name"], truth["name"]))
+        return BehaviourVerdict(candidate["name"] == "a", "passes" if candidate["name"] == "a" else "parts")
+
+    monkeypatch.setattr(consensus, "compare_behaviour", one_way)
+    assert motions_agree({"name": "a"}, {"name": "b"}) == (False, "parts") and asked == [("a", "b"), ("b", "a")]
+    monkeypatch.undo()
+    assert motions_agree(swing(), swing())[0] and not motions_agree(swing(), swing(radius=1.01))[0]
     assert motions_agree(swing(), None) == (False, "not both simulated")
 
 

@@ -1,8 +1,9 @@
 """Consensus without a ground truth: independent programs grouped by whether they move alike.
 
 Two programs agree when the behaviour comparison (``eval/behaviour.py``) passes both ways, each
-program in turn in the ground truth's role: the tolerances are fractions of the motion taken as the
-truth, so one direction alone would let a program with a tiny motion accept anything near rest.
+program in turn in the ground truth's role: the tolerances are fractions of the scales of the motion
+taken as the truth, so the comparison is not symmetric, and agreement must not depend on which of
+two samples is asked first.
 No step-error allowance is given (there is no refined run of either program): two formulations
 whose time stepping differs by more than 1e-3 of the motion's scales do not agree. The same program
 text is the same motion (the simulation is deterministic) and agrees without a comparison.
