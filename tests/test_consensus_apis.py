@@ -81,6 +81,7 @@ async def test_consensus_on_the_three_apis_finds_the_faulty_sample(tmp_path: Pat
         block = record["consensus"]
         assert [len(g) for g in block["groups"]] == [2, 1] and block["confidence"] == 0.6667, name
         assert record["overall"] is True and record["behaviour"]["passed"] is True, name
+        assert "consensus: 100.0% of answers pass against 66.7% of single samples (3)" in output, output
         odd = block["samples"][block["groups"][1][0]]
         assert odd["overall"] is False and odd["behaviour_passed"] is False and "motions part" in (
             odd["behaviour_detail"] or "")
