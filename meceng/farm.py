@@ -33,6 +33,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 
 from meceng.llm.factory import make_backend
 from meceng.llm.scheduler import EndpointBackend, PrioritySlots
+from meceng.llm.types import LOCAL_BACKENDS
 from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.pipeline.grading import grading_pool
@@ -66,7 +67,7 @@ class SweepJob:
     def hosts(self) -> tuple[str, ...]:
         """The servers this run uses. A hosted API is a server per model (its limits are per model
         and it swaps nothing): two models on api.openai.com go side by side, not one after another."""
-        if self.settings.llm.backend == "gold":
+        if self.settings.llm.backend in LOCAL_BACKENDS:
             return ()
         hosted = self.settings.llm.backend == "anthropic" or any(
             "api.openai.com" in h for h in self.settings.llm.hosts)
@@ -265,7 +266,8 @@ async def _one(job: SweepJob, shared: SharedServices, servers: dict[str, Priorit
     screen.status(job, "starting")
     backend = None
     try:
-        backend = make_backend(settings.llm)
+        # the scripted model needs the run's task instances: the run makes it (pipeline/scripted.py)
+        backend = None if settings.llm.backend == "scripted" else make_backend(settings.llm)
         if isinstance(backend, EndpointBackend):
             backend.share_slots(job.slots(servers), rank)
         path = await run_benchmark(settings, backend=backend, shared=shared,

@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+from meceng.eval.calibration import consensus_sections
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.report import (
@@ -310,6 +311,9 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                             [[c["model"], c["with"].text(), c["without"].text(),
                               "–" if c["points"] is None else f"{c['points']:+.1f}"] for c in contribution])
             sections.append(("Repair benchmark: what the tools are worth", md, ht, None))
+
+    for title, headers, rows in consensus_sections(runs):
+        sections.append((title, *_table(headers, rows), None))
 
     intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
              "Wilson interval in brackets; infrastructure failures are left out of the rates.")

@@ -78,10 +78,11 @@ class Study:
     variations: int = 20
     seed: int = 0
     description: str = ""
-    agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark
+    agent: str = "pipeline"  # "loop": the tool-calling agent; "repair": the repair benchmark; "consensus"
     repair_tools: bool = True
     drafts_per_task: int = 1
     texts: tuple[str, ...] = ("paper",)  # an axis: the paper's task texts and/or the open ones (issue 36)
+    samples: int = 5  # agent = "consensus": independent programs per task
 
 
 @dataclass(frozen=True)
@@ -119,6 +120,7 @@ class GridPoint:
     repair_tools: bool = True
     drafts_per_task: int = 1
     texts: str = "paper"
+    samples: int = 5
 
     @property
     def default_sampling(self) -> bool:
@@ -153,6 +155,8 @@ class GridPoint:
             text += f"_texts-{self.texts}"
         if self.agent == "repair":
             text += f"_repair-tools-{'on' if self.repair_tools else 'off'}-d{self.drafts_per_task}"
+        elif self.agent == "consensus":
+            text += f"_consensus-k{self.samples}"
         elif self.agent != "pipeline":
             text += f"_agent-{self.agent}"
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
@@ -179,8 +183,8 @@ def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
 
 
 SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task",
-              "texts"}
-AGENTS = ("pipeline", "loop", "repair")
+              "texts", "samples"}
+AGENTS = ("pipeline", "loop", "repair", "consensus")
 GRID_KEYS = {"temperature", "think", "select_template", "code_template", "texts"}
 MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
@@ -198,9 +202,11 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
     merged = {**defaults, **data}
     levels = tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"])))
     only = _only(merged.get("only", []))
+    # consensus needs samples that differ: sampled at 0.7 unless the grid says otherwise
+    default_t = 0.7 if merged.get("agent") == "consensus" else 0.0
     return Study(
         name=name, models=models,
-        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [0.0]))),
+        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [default_t]))),
         thinks=_tuple(grid.get("think", [False])),
         select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
         code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
@@ -208,6 +214,7 @@ def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tu
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
         description=str(data.get("description", "")), agent=_agent(name, merged.get("agent", "pipeline")),
         repair_tools=_tools(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
+        samples=int(merged.get("samples", 5)),
         texts=_texts(name, grid.get("texts", merged.get("texts", ["paper"])), levels, only),
     )
 
@@ -290,7 +297,7 @@ def study_points(study: Study) -> list[GridPoint]:
             study.texts):
         point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
                           study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task,
-                          texts)
+                          texts, study.samples)
         points.setdefault(point.name, point)
     return list(points.values())
 

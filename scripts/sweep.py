@@ -211,7 +211,7 @@ def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespac
             select_template=point.select_template, code_template=point.code_template,
             progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
             agent=point.agent, repair_tools=point.repair_tools, drafts_per_task=point.drafts_per_task,
-            texts=point.texts)
+            texts=point.texts, samples=point.samples)
         jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0], point))
     return jobs
 

@@ -201,6 +201,24 @@ async def test_a_compare_call_is_answered_recorded_and_its_answer_read_by_the_se
     assert reply.completion_tokens > 0 and reply.prompt_tokens > len(answer)  # one token a byte: the answer was read
 
 
+async def test_a_consensus_run_of_noise_is_every_sample_a_group_of_its_own(server: LlamaServer,
+                                                                           tmp_path: Path) -> None:
+    """``--agent consensus`` on the real server: three samples per task at distinct seeds, each the
+    model's failure and none like another (no program, no motion), so every group is one sample
+    and the confidence 1/3."""
+    backend = WatchedBackend(llm(server.url, temperature=0.7))
+    settings = RunSettings(llm=backend.settings, only=SLUGS[:1], variations=1, out=tmp_path, run_name="consensus",
+                           progress=False, workers=2, agent="consensus", samples=3)
+    run = json.loads((await run_benchmark(settings, backend=backend)).read_text())
+    assert backend.sent == 3 * 2 and run["summary"]["infrastructure_failures"] == 0
+    for task in run["tasks"]:
+        block = task["consensus"]
+        assert task["overall"] is False and task["first_failure"] in MODEL_FAILURES
+        assert block["groups"] == [[0], [1], [2]] and block["confidence"] == pytest.approx(1 / 3, abs=1e-4)
+        assert [s["seed"] for s in block["samples"]] == [42, 43, 44]
+        assert all(s["lost"] is None and s["overall"] is False and s["ran"] is False for s in block["samples"])
+
+
 @pytest.mark.slow
 async def test_a_hung_server_ends_the_run_in_bounded_time_with_the_tasks_lost(model: Path, tmp_path: Path) -> None:
     """The server stopped (SIGSTOP): connections are accepted, nothing is answered. The first

@@ -17,6 +17,8 @@ if TYPE_CHECKING:
     from meceng.pipeline import RunSettings
 
 LEVELS = ("1", "2", "3a", "3b")
+#: --agent consensus's sampling temperature when none is given (its samples must differ to vote)
+CONSENSUS_TEMPERATURE = 0.7
 
 
 def parse_levels(text: str) -> tuple[str, ...]:
@@ -107,9 +109,14 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="fork: warm fork server (default); subprocess: a cold interpreter per program")
-    parser.add_argument("--agent", choices=("pipeline", "loop", "repair"), default="pipeline",
+    parser.add_argument("--agent", choices=("pipeline", "loop", "repair", "consensus"), default="pipeline",
                         help="pipeline: the paper's two LLM steps; loop: a tool-calling agent that tests and repairs; "
-                             "repair: the repair benchmark (find and fix the seeded fault of a draft)")
+                             "repair: the repair benchmark (find and fix the seeded fault of a draft); consensus: "
+                             "--samples independent programs per task grouped by behaviour, the largest group's "
+                             "program as the answer and its share as the confidence (levels 1-2; temperature 0.7 "
+                             "unless --temperature)")
+    parser.add_argument("--samples", type=positive_int, default=5,
+                        help="--agent consensus: independent programs per task")
     parser.add_argument("--tools", choices=("on", "off"), default="on",
                         help="--agent repair: with the agent's tools (simulate, snapshot, ...) or a single answer")
     parser.add_argument("--drafts-per-task", type=positive_int, default=1,
@@ -132,8 +139,12 @@ def llm_settings(args: argparse.Namespace, model: str | None = None, temperature
     backend = args.backend or ("gold" if model == "gold" else "ollama")
     if model == "gold":
         backend = "gold"
+    if model.startswith("scripted"):  # scripted:p=P, scripted-same:p=P (llm/backend_scripted.py)
+        backend = "scripted"
     if temperature is None:
-        temperature = 0.0 if args.temperature is None else args.temperature
+        temperature = args.temperature
+    if temperature is None:  # independent samples need sampling: consensus draws at 0.7 by default
+        temperature = CONSENSUS_TEMPERATURE if getattr(args, "agent", None) == "consensus" else 0.0
     settings = LLMSettings(
         model=model, backend=backend, hosts=tuple(args.host or (DEFAULT_HOSTS[backend],)),
         api_defaults=args.api_defaults, api_key_env=args.api_key_env, temperature=temperature, seed=args.llm_seed,
@@ -164,7 +175,7 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         select_template=args.select_template, code_template=args.code_template,
         progress=not args.no_progress, executor=args.executor, agent=args.agent, max_rounds=args.max_rounds,
         repair_tools=args.tools == "on", drafts_per_task=args.drafts_per_task,
-        token_budget=args.token_budget, texts=args.texts,
+        token_budget=args.token_budget, texts=args.texts, samples=args.samples,
     )
 
 

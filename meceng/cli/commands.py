@@ -205,6 +205,7 @@ def print_summary(run_json: Path) -> None:
         labels = ", ".join(f"{label} {k}/{n}" for label, (k, n) in repair["by_label"].items())
         print(f"repair (tools {'on' if repair['tools'] else 'off'}): {repair['repaired']}/{repair['tasks']} drafts "
               f"repaired — {labels}")
+    print_consensus(run["tasks"])
     lost = [t for t in run["tasks"] if t.get("first_failure") == "infrastructure"]
     unfit = [t["context_exceeded"] for t in lost if t.get("context_exceeded")]
     if unfit:
@@ -215,6 +216,19 @@ def print_summary(run_json: Path) -> None:
         print(f"{count} task{'s' if count != 1 else ''} lost to the server, left out of the rates; the first: "
               f"{lost[0]['slug']} seed {lost[0]['seed']}: {lost[0].get('infrastructure_error')}\n"
               f"redo them once that is fixed: meceng run --resume {run_json.parent}")
+
+
+def print_consensus(tasks: list[dict[str, Any]]) -> None:
+    """A consensus run's line: its answers against single samples, and its mean confidence."""
+    from meceng.eval.calibration import accuracy, consensus_records
+
+    records = consensus_records(tasks)
+    if records:
+        rates = accuracy(tasks)
+        mean = sum(float(t["consensus"]["confidence"]) for t in records) / len(records)
+        print(f"consensus: {100 * (rates['consensus'].value or 0):.1f}% of answers pass against "
+              f"{100 * (rates['single'].value or 0):.1f}% of single samples ({rates['single'].n}); mean confidence "
+              f"{mean:.2f} (meceng report: accuracy per confidence bin)")
 
 
 def overflow_summary(unfit: list[dict[str, Any]], run_dir: Path) -> str:

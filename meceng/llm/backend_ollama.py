@@ -44,7 +44,7 @@ class OllamaBackend(EndpointBackend):
     async def _send(self, endpoint: Endpoint, request: ChatRequest) -> tuple[Any, float]:
         body: dict[str, Any] = {
             "model": self.settings.model, "messages": _wire_messages(request.messages), "stream": False,
-            "options": self.settings.options(), "keep_alive": self.settings.keep_alive,
+            "options": self.settings.options(request.sample), "keep_alive": self.settings.keep_alive,
         }
         if self.settings.think is not None:
             body["think"] = self.settings.think

@@ -96,8 +96,9 @@ class OpenAIBackend(EndpointBackend):
         }
         if not self.settings.api_defaults:
             body["temperature"] = self.settings.temperature
-            if self.settings.seed is not None:
-                body["seed"] = self.settings.seed
+            seed = self.settings.sample_seed(request.sample)
+            if seed is not None:
+                body["seed"] = seed
         if isinstance(self.settings.think, str):
             body["reasoning_effort"] = self.settings.think
         if request.tools:

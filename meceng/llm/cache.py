@@ -23,9 +23,11 @@ from meceng.llm.types import Backend, ChatRequest, ChatResponse, LLMSettings, To
 def request_key(settings: LLMSettings, request: ChatRequest) -> str:
     payload = {
         "backend": settings.backend, "model": settings.model, "messages": list(request.messages),
-        "options": settings.options(), "think": settings.think, "purpose": request.purpose,
+        "options": settings.options(request.sample), "think": settings.think, "purpose": request.purpose,
         "tools": list(request.tools),
     }
+    if request.sample is not None:  # only then: the keys of every earlier run's answers stay as they were
+        payload["sample"] = request.sample
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
 

@@ -21,4 +21,6 @@ def make_backend(settings: LLMSettings) -> Backend:
         from meceng.llm.backend_anthropic import AnthropicBackend
 
         return AnthropicBackend(settings, api_key=api_key(settings))
+    if settings.backend == "scripted":  # it needs the tasks' drafts, which the pipeline hands it
+        raise ValueError("the scripted backend is made by the run (pipeline/scripted.py), not here")
     raise ValueError(f"unknown backend {settings.backend!r} (choose {', '.join(BACKENDS)})")

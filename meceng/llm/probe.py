@@ -16,7 +16,7 @@ from typing import Any
 
 import httpx
 
-from meceng.llm.types import LLMSettings, api_key
+from meceng.llm.types import LOCAL_BACKENDS, LLMSettings, api_key
 
 TIMEOUT_S = 5.0
 
@@ -40,7 +40,7 @@ class ServerInfo:
 
 async def probe(settings: LLMSettings) -> list[ServerInfo]:
     """Every host of ``settings``, asked at once; the gold backend has none."""
-    if settings.backend == "gold":
+    if settings.backend in LOCAL_BACKENDS:
         return []
     ask = {"ollama": _ollama, "openai": _openai, "anthropic": _anthropic}[settings.backend]
     return list(await asyncio.gather(*(ask(settings, host.rstrip("/")) for host in settings.hosts)))

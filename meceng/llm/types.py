@@ -71,15 +71,24 @@ class LLMSettings:
         if self.backend == "anthropic" and not self.api_defaults:
             object.__setattr__(self, "api_defaults", True)
 
-    def options(self) -> dict[str, Any]:
+    def options(self, sample: int | None = None) -> dict[str, Any]:
         """Ollama's sampling options; with ``api_defaults`` the model's own temperature and a
-        random seed (the paper's thinking runs use each model's default temperature)."""
+        random seed (the paper's thinking runs use each model's default temperature). ``sample``:
+        the index of one of several independent answers to one prompt (``--agent consensus``)."""
         opts: dict[str, Any] = {"num_ctx": self.num_ctx, "num_predict": self.num_predict}
         if not self.api_defaults:
             opts["temperature"] = self.temperature
-            if self.seed is not None:
-                opts["seed"] = self.seed
+            seed = self.sample_seed(sample)
+            if seed is not None:
+                opts["seed"] = seed
         return opts
+
+    def sample_seed(self, sample: int | None) -> int | None:
+        """The seed sent for sample ``sample`` of a prompt: the run's seed, offset by the sample's
+        index so that independent samples are drawn with distinct seeds (None: no seed is sent)."""
+        if self.seed is None:
+            return None
+        return self.seed + (sample or 0)
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -100,6 +109,9 @@ class ChatRequest:
     task_key: str
     gold: str | None = None
     tools: tuple[dict[str, Any], ...] = ()  # JSON-schema function definitions for native tool calling
+    # one of several independent answers to the same prompt (``--agent consensus``): the backend
+    # offsets its sampling seed by it and the response cache keys on it; None: the only answer
+    sample: int | None = None
 
     @property
     def prompt(self) -> str:
@@ -201,9 +213,11 @@ class Backend(Protocol):
     async def aclose(self) -> None: ...
 
 
-BACKENDS = ("ollama", "openai", "anthropic", "gold")
+BACKENDS = ("ollama", "openai", "anthropic", "gold", "scripted")
+#: backends that answer in this process, with no server to probe or preflight for
+LOCAL_BACKENDS = ("gold", "scripted")
 DEFAULT_HOSTS = {"ollama": "http://127.0.0.1:11434", "openai": "https://api.openai.com/v1",
-                 "anthropic": "https://api.anthropic.com", "gold": "gold"}
+                 "anthropic": "https://api.anthropic.com", "gold": "gold", "scripted": "scripted"}
 KEY_VARIABLES = {"openai": "OPENAI_API_KEY", "anthropic": "ANTHROPIC_API_KEY"}
 
 

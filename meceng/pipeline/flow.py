@@ -21,6 +21,7 @@ from meceng.eval.chain import RIGID_STAGES, StageResult, Verdict
 from meceng.llm.types import Backend
 from meceng.tasks.base import TaskInstance
 
+from .consensus import consensus_flow
 from .evaluation import Evaluator
 from .grading import offload
 from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
@@ -50,6 +51,8 @@ async def run_flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> 
 
 async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dict[str, Any]:
     settings, evaluator = ctx.settings, ctx.evaluator
+    if settings.agent == "consensus":
+        return await consensus_flow(instance, kind, ctx)
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     select_template, code_template = settings.templates(instance.kind)

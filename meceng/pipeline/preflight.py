@@ -21,6 +21,7 @@ from functools import cache
 from pathlib import Path
 
 from meceng.eval.chain import Tolerances
+from meceng.llm.types import LOCAL_BACKENDS
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import Execution, ExecutionLimits
@@ -235,7 +236,7 @@ async def ensure_stack(instances: list[TaskInstance], evaluator: Evaluator) -> N
 async def ensure_sweep_stack(runs: list[RunSettings], pool: WarmPool | None, slots: asyncio.Semaphore) -> None:
     """The preflight once for a whole sweep (the union of its runs' kinds), on its shared fork
     server and worker slots, before any run starts; gold runs ask no server and are left out."""
-    runs = [s for s in runs if s.preflight and s.llm.backend != "gold"]
+    runs = [s for s in runs if s.preflight and s.llm.backend not in LOCAL_BACKENDS]
     if not runs:
         return
     registry = default_registry()

@@ -21,7 +21,7 @@ from typing import Any
 from meceng.eval.chain import Tolerances
 from meceng.llm.cache import CachedBackend, ResponseCache
 from meceng.llm.factory import make_backend
-from meceng.llm.types import Backend
+from meceng.llm.types import LOCAL_BACKENDS, Backend
 from meceng.logs import get_logger
 from meceng.progress import Advance
 from meceng.tasks.base import TaskInstance
@@ -38,6 +38,7 @@ from .lock import HEARTBEAT_S, RunLock
 from .preflight import ensure_stack
 from .records import failed_record
 from .rundir import RunWriter, attach_run_log, record_key, safe_name, slim_record, write_atomic
+from .scripted import scripted_backend
 from .services import ProgressFactory, SharedServices
 from .settings import RunSettings
 
@@ -73,6 +74,8 @@ async def run_benchmark(
         raise ValueError(f"no task models for levels {settings.levels} / only {settings.only}")
     if settings.executor not in ("fork", "subprocess"):
         raise ValueError(f"unknown executor {settings.executor!r} (fork or subprocess)")
+    if settings.agent == "consensus" and not set(settings.levels) <= {"1", "2"}:
+        raise ValueError("--agent consensus groups programs by their motion: levels 1 and 2 only")
     # open texts: only the models that have one; one named in --only that has none is refused
     models, without_text = registry.with_texts(models, settings.texts, settings.levels, settings.only)
     if without_text:
@@ -80,6 +83,8 @@ async def run_benchmark(
                     left_out=without_text)
     instances = registry.instances(models, settings.seed, settings.variations, settings.texts)
     own_backend = backend is None
+    if backend is None and settings.llm.backend == "scripted":
+        backend = scripted_backend(settings.llm, instances)
     backend = backend or make_backend(settings.llm)  # a missing API key stops here, before any file is written
     started = time.time()
     stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
@@ -128,7 +133,7 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           store=shared.store if shared is not None else None,
                           grading=shared.grading if shared is not None else grading_pool(settings.workers))
     # a stack that cannot grade stops here, before any LLM request (a gold run asks no server)
-    if settings.preflight and settings.llm.backend != "gold" and todo:
+    if settings.preflight and settings.llm.backend not in LOCAL_BACKENDS and todo:
         try:
             await ensure_stack(todo, evaluator)
         except BaseException:

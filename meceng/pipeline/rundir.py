@@ -179,6 +179,11 @@ def slim_record(record: dict[str, Any]) -> dict[str, Any]:
             slim[step] = {"meta": {k: v for k, v in record[step].get("meta", {}).items() if k != "thinking"}}
     if "agent" in record:
         slim["agent"] = {k: record["agent"].get(k) for k in _AGENT_SUMMARY_KEYS}
+    if "consensus" in record:  # the groups and every sample's verdicts, without programs and words
+        block = record["consensus"]
+        slim["consensus"] = {**{k: v for k, v in block.items() if k not in ("samples", "agreements")},
+                             "samples": [{k: v for k, v in s.items() if k not in ("code", "behaviour_detail")}
+                                         for s in block.get("samples", [])]}
     return slim
 
 

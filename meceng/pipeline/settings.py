@@ -37,9 +37,11 @@ class RunSettings:
     preflight: bool = True
     executor: str = "fork"
     agent: str = "pipeline"  # "pipeline": the paper's two steps; "loop": tool-calling agent that tests its code;
-    # "repair": the repair benchmark (a draft with a seeded fault to find and fix)
+    # "repair": the repair benchmark (a draft with a seeded fault to find and fix); "consensus": K
+    # independent programs per task grouped by behaviour, the largest group's answer (levels 1-2)
     repair_tools: bool = True  # --agent repair: the agent's tools, or a single answer
     drafts_per_task: int = 1
+    samples: int = 5  # --agent consensus: independent programs per task
     max_rounds: int = 6
     token_budget: int = 30000
     part_select_template: str = DEFAULT_PART_SELECT
@@ -64,6 +66,7 @@ class RunSettings:
             executor=pipeline.get("executor", "fork"), agent=pipeline.get("agent", "pipeline"),
             max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
             repair_tools=pipeline.get("repair_tools", True), drafts_per_task=pipeline.get("drafts_per_task", 1),
+            samples=pipeline.get("samples", 5),
             part_timeout_s=pipeline.get("part_timeout_s", 300.0), texts=pipeline.get("texts", "paper"),
             part_select_template=data["prompt"].get("part_select_template", DEFAULT_PART_SELECT),
             part_code_template=data["prompt"].get("part_code_template", DEFAULT_PART_CODE),
@@ -75,7 +78,7 @@ class RunSettings:
             "pipeline": {
                 "executor": self.executor, "agent": self.agent, "max_rounds": self.max_rounds,
                 "token_budget": self.token_budget, "repair_tools": self.repair_tools,
-                "drafts_per_task": self.drafts_per_task,
+                "drafts_per_task": self.drafts_per_task, "samples": self.samples,
                 "levels": list(self.levels), "only": list(self.only), "variations": self.variations,
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
                 "solution_tolerance": self.solution_tolerance, "part_timeout_s": self.part_timeout_s,
