@@ -13,11 +13,6 @@ import json
 from pathlib import Path
 from typing import Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
 from meceng.eval.calibration import consensus_sections
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.rates import Rate, Run, load_runs
@@ -42,68 +37,7 @@ from meceng.eval.report import (
     topology_cause_table,
 )
 from meceng.eval.topology import CAUSES as TOPOLOGY_CAUSES
-
-
-def _save(fig: Any, ax: Any, path: Path) -> None:
-    """A legend where something was drawn (a run with nothing graded draws nothing), then the PNG."""
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-
-
-def _bar_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, ylabel: str) -> None:
-    """Grouped bars with Wilson error bars: one group per model, one bar per key."""
-    keys = list(dict.fromkeys(k for d in groups.values() for k in d))  # first-seen order
-    fig, ax = plt.subplots(figsize=(max(6, 1.2 * len(groups) * max(1, len(keys))), 4))
-    width = 0.8 / max(1, len(keys))
-    for j, key in enumerate(keys):
-        xs, ys, low, high = [], [], [], []
-        for i, model in enumerate(groups):
-            rate = groups[model].get(key)
-            if rate is None or rate.value is None:
-                continue
-            down, up = rate.error_bar
-            xs.append(i + j * width)
-            ys.append(100 * rate.value)
-            low.append(100 * down)
-            high.append(100 * up)
-        ax.bar(xs, ys, width, yerr=[low, high], capsize=3, label=key)
-    ax.set_xticks([i + width * (len(keys) - 1) / 2 for i in range(len(groups))], list(groups), rotation=20)
-    ax.set_ylim(0, 105)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    _save(fig, ax, path)
-
-
-def _line_plot(path: Path, groups: dict[str, dict[str, Rate]], title: str, xlabel: str) -> None:
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for model, rates in groups.items():
-        known = {k: r for k, r in rates.items() if r.value is not None}
-        if not known:
-            continue
-        xs = [float(k) for k in known]
-        ys = [100 * r.value for r in known.values() if r.value is not None]
-        bars = [r.error_bar for r in known.values()]
-        ax.errorbar(xs, ys, yerr=[[100 * d for d, _ in bars], [100 * u for _, u in bars]],
-                    marker="o", capsize=3, label=model)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("overall success (%)")
-    ax.set_ylim(0, 105)
-    ax.set_title(title)
-    _save(fig, ax, path)
-
-
-def _difficulty_plot(path: Path, rows: list[dict[str, Any]]) -> None:
-    fig, ax = plt.subplots(figsize=(7, max(3, 0.25 * len(rows))))
-    ax.barh([r["slug"] for r in rows][::-1], [100 * r["difficulty"] for r in rows][::-1])
-    ax.set_xlabel("difficulty = 1 - mean overall success (%)")
-    ax.set_xlim(0, 100)
-    ax.set_title("Difficulty per task model")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+from meceng.report_plots import bar_plot, difficulty_plot, line_plot, release_plot
 
 
 def _table(headers: list[str], rows: list[list[str]], links: list[str] | None = None) -> tuple[str, str]:
@@ -135,23 +69,6 @@ def _viewer_links(out: Path, key: str, values: list[str]) -> list[str] | None:
     return [f"viewer/index.html#{key}={quote(v, safe='')}" for v in values]
 
 
-def _release_plot(path: Path, points: list[tuple[str, str, float | None, float]]) -> None:
-    import datetime as dt
-
-    fig, ax = plt.subplots(figsize=(7, 4))
-    for model, release, size, rate in points:
-        when = dt.date.fromisoformat(release)
-        ax.scatter([when], [100 * rate], s=20 + 3 * (size or 10))
-        ax.annotate(model, (when, 100 * rate), fontsize=7, xytext=(3, 3), textcoords="offset points")
-    ax.set_ylabel("overall success (%)")
-    ax.set_ylim(0, 105)
-    ax.set_title("Overall success vs release date (marker size: parameters)")
-    fig.autofmt_xdate()
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-
-
 def _spec_models(path: Path | None) -> list[dict[str, Any]]:
     """A sweep spec's [[models]] entries (none without a spec)."""
     import tomllib
@@ -181,7 +98,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
     headers = ["run", "n", *[label for _, label in RIGID_COLUMNS]]
     rows = [[r["run"], str(r["n"]), *[r[k].text() for k, _ in RIGID_COLUMNS]] for r in stages]
     md, ht = _table(headers, rows, _viewer_links(out, "model", [r["model"] for r in stages]))
-    _bar_plot(out / "stages.png", {r["run"]: {label: r[k] for k, label in RIGID_COLUMNS} for r in stages},
+    bar_plot(out / "stages.png", {r["run"]: {label: r[k] for k, label in RIGID_COLUMNS} for r in stages},
               "Success rate per stage", "success (%)")
     sections.append(("Success per stage (Table 2)", md, ht, "stages.png"))
 
@@ -226,7 +143,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
 
     temperature = series(runs, "temperature")
     if any(len(v) > 1 for v in temperature.values()):
-        _line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
+        line_plot(out / "temperature.png", temperature, "Overall success vs temperature", "temperature")
     md, ht = _table(["model", "temperature", "overall"],
                     [[m, k, r.text()] for m, d in temperature.items() for k, r in d.items()])
     sections.append(("Temperature (Fig. 8; levels 1-2)", md, ht,
@@ -234,19 +151,19 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
 
     select = component_series(runs)
     select_overall = series(runs, "select_template")
-    _bar_plot(out / "select_templates.png", select, "Component selection per selection prompt", "selection (%)")
+    bar_plot(out / "select_templates.png", select, "Component selection per selection prompt", "selection (%)")
     md, ht = _table(["model", "selection prompt", "component selection", "overall"],
                     [[m, k, r.text(), select_overall[m][k].text()] for m, d in select.items() for k, r in d.items()])
     sections.append(("Component-selection prompts (Fig. 9; levels 1-2)", md, ht, "select_templates.png"))
 
     code = series(runs, "code_template")
-    _bar_plot(out / "code_templates.png", code, "Overall success per code prompt", "overall (%)")
+    bar_plot(out / "code_templates.png", code, "Overall success per code prompt", "overall (%)")
     md, ht = _table(["model", "code prompt", "overall"],
                     [[m, k, r.text()] for m, d in code.items() for k, r in d.items()])
     sections.append(("Code-generation prompts (Fig. 10; levels 1-2)", md, ht, "code_templates.png"))
 
     hard = difficulty(runs)
-    _difficulty_plot(out / "difficulty.png", hard)
+    difficulty_plot(out / "difficulty.png", hard)
     md, ht = _table(["task model", "level", "n", "overall", "difficulty"],
                     [[r["slug"], str(r["level"]), str(r["n"]), r["overall"].text(), f"{100 * r['difficulty']:.1f}"]
                      for r in hard], _viewer_links(out, "task", [r["slug"] for r in hard]))
@@ -261,7 +178,7 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                 release, size = facts[model]
                 points.append((model, release, size, by_think["False"].value))
         if points:
-            _release_plot(out / "release.png", points)
+            release_plot(out / "release.png", points)
             md, ht = _table(["model", "release", "size (B)", "overall (no thinking)"],
                             [[m, r, "" if s is None else f"{s:g}", f"{100 * v:.1f}"] for m, r, s, v in points])
             sections.insert(1, ("Success vs release date (Fig. 7)", md, ht, "release.png"))
