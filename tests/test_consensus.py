@@ -41,21 +41,17 @@ def test_equal_motions_group_a_faulty_one_does_not_and_the_largest_group_answers
     assert consensus_of([faulty, good, good, swing()], ["b", "x", "y", "y"], [False] * 4).chosen == 2
 
 
-def test_agreement_is_asked_both_ways(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Tolerances are fractions of the scales of the motion in the truth's role, so the comparison
-    is not symmetric: two samples agree only when it passes with either in that role."""
-    import meceng.eval.consensus as consensus
-    from meceng.eval.behaviour import BehaviourVerdict
-
-    asked: list[tuple[str, str]] = []
-
-    def one_way(candidate: dict, truth: dict, tolerance: Any = None) -> BehaviourVerdict:
-        asked.append((candidate["name"], truth["name"]))
-        return BehaviourVerdict(candidate["name"] == "a", "passes" if candidate["name"] == "a" else "parts")
-
-    monkeypatch.setattr(consensus, "compare_behaviour", one_way)
-    assert motions_agree({"name": "a"}, {"name": "b"}) == (False, "parts") and asked == [("a", "b"), ("b", "a")]
-    monkeypatch.undo()
+def test_agreement_does_not_depend_on_which_sample_is_asked_first() -> None:
+    """Tolerances are fractions of a motion's scales: the comparison takes the smaller of the two
+    programs' scales (``eval/agreement``, the ``compare`` tool's), so two samples agree or not in
+    either order. A motion with a larger range is compared at the smaller one's tolerance."""
+    small, large = swing(radius=1.0), swing(radius=1.0, shift=0.003)
+    wide = swing(radius=3.0)
+    wide_shifted = swing(radius=3.0, shift=0.003)
+    for a, b in ((small, large), (wide, wide_shifted)):
+        assert motions_agree(a, b)[0] == motions_agree(b, a)[0]
+    # the same offset: within 1e-3 of the wide motion's range, not of the small one's
+    assert motions_agree(wide, wide_shifted)[0] and not motions_agree(small, large)[0]
     assert motions_agree(swing(), swing())[0] and not motions_agree(swing(), swing(radius=1.01))[0]
     assert motions_agree(swing(), None) == (False, "not both simulated")
 

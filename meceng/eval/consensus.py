@@ -1,12 +1,11 @@
 """Consensus without a ground truth: independent programs grouped by whether they move alike.
 
-Two programs agree when the behaviour comparison (``eval/behaviour.py``) passes both ways, each
-program in turn in the ground truth's role: the tolerances are fractions of the scales of the motion
-taken as the truth, so the comparison is not symmetric, and agreement must not depend on which of
-two samples is asked first.
-No step-error allowance is given (there is no refined run of either program): two formulations
-whose time stepping differs by more than 1e-3 of the motion's scales do not agree. The same program
-text is the same motion (the simulation is deterministic) and agrees without a comparison.
+Two programs agree when their motions do (``eval/agreement.compare_motions``, the comparison the
+agent's ``compare`` tool answers with): bodies matched by their physics, every quantity within 1e-3
+of the smaller of the two motions' scales, so agreement does not depend on which sample is asked
+first. No step-error allowance is given (there is no refined run of either program): two
+formulations whose time stepping differs by more than that do not agree. The same program text is
+the same motion (the simulation is deterministic) and agrees without a comparison.
 
 Groups are cliques: every two samples of a group agree. Agreement need not be transitive (A~B,
 B~C, not A~C), so groups are formed greedily: samples in order of how many others they agree with
@@ -25,7 +24,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from meceng.eval.behaviour import BehaviourTolerance, compare_behaviour
+from meceng.eval.agreement import compare_motions
+from meceng.eval.behaviour import BehaviourTolerance
 
 
 @dataclass(frozen=True)
@@ -60,15 +60,13 @@ class Consensus:
 
 def motions_agree(a: dict[str, Any] | None, b: dict[str, Any] | None,
                   tolerance: BehaviourTolerance | None = None) -> tuple[bool, str]:
-    """Whether two motion records agree, each in the ground truth's role in turn; the words say
+    """Whether two motion records agree (``eval/agreement.compare_motions``, the comparison the
+    agent's ``compare`` tool gives: no ground truth, the smaller of the two scales); the words say
     where they part when they do not."""
     if a is None or b is None:
         return False, "not both simulated"
-    forward = compare_behaviour(a, b, tolerance)
-    if not forward.passed:
-        return False, forward.detail
-    backward = compare_behaviour(b, a, tolerance)
-    return bool(backward.passed), backward.detail if not backward.passed else forward.detail
+    result = compare_motions(a, b, tolerance)
+    return result.agree is True, result.detail
 
 
 def group_samples(ran: Sequence[bool], lost: Sequence[bool], agree: Callable[[int, int], bool]) -> Consensus:

@@ -72,6 +72,6 @@ def consensus_section(block: dict[str, Any]) -> str:
                     f"<td>{'agree' if a['agree'] else 'differ'}</td><td class='detail'>{_esc(a['detail'])}</td></tr>"
                     for a in block.get("agreements", []))
     if pairs:
-        out.append("<details><summary>every pair compared (each program in the other's ground-truth role, both ways)"
+        out.append("<details><summary>every pair compared (at the smaller of the two motions' scales)"
                    f"</summary><table class='stages'>{pairs}</table></details>")
     return "".join(out)
