@@ -81,7 +81,7 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
             assembly = registry.get(slug).instance(int(seed))
             return next(part for _, part in assembly.parts if part.key == record_key(record))
         # the text the task had (records before issue 36 say none: the paper's)
-        return registry.get(record["slug"]).instance(record["seed"], texts=record.get("texts", "paper"))
+        return registry.instance_of(registry.get(record["slug"]), record["seed"], record.get("texts", "paper"))
 
     def kind_of(instance: TaskInstance, record: dict[str, Any]) -> TaskKind:
         if instance.kind == "part":

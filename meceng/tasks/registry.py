@@ -98,10 +98,17 @@ class TaskRegistry:
                   texts: str = "paper") -> list[TaskInstance]:
         """Variation k of every model uses seed ``seed + k``; order is model-major. ``texts``: the
         task text every instance gets (``"open"``: only level-1/2 models have one, see ``with_texts``)."""
+        models = [m for m in models if texts == "paper" or isinstance(m, TaskModel)]
+        return [self.instance_of(m, seed + k, texts) for m in models for k in range(variations)]
+
+    @staticmethod
+    def instance_of(model: AnyModel, seed: int, texts: str = "paper") -> TaskInstance:
+        """One instance with the ``texts`` task text; parts and assemblies have the paper's alone."""
         if texts == "paper":
-            return [m.instance(seed + k) for m in models for k in range(variations)]
-        return [m.instance(seed + k, texts=texts) for m in models if isinstance(m, TaskModel)
-                for k in range(variations)]
+            return model.instance(seed)
+        if not isinstance(model, TaskModel):
+            raise ValueError(f"task model {model.slug!r} (level {model.level}) has no {texts} text")
+        return model.instance(seed, texts=texts)
 
     def with_texts(self, models: list[AnyModel], texts: str, levels: Iterable[str],
                    only: Iterable[str] = ()) -> tuple[list[AnyModel], list[str]]:
