@@ -63,6 +63,11 @@ class Run:
 
     @property
     def model(self) -> str:
+        """The run's model; a consensus run across models names them all (``a+b``): its rates are
+        never pooled with those of its first model's own runs."""
+        models = self.settings.get("pipeline", {}).get("consensus_models")
+        if models:
+            return "+".join(str(m["model"]) for m in models)
         return str(self.settings["llm"]["model"])
 
     @property
