@@ -12,7 +12,7 @@ import pytest
 from fake_ollama import FakeOllama, chat_reply
 
 from meceng.eval.calibration import per_model
-from meceng.eval.rates import Rate
+from meceng.eval.rates import Rate, run_model
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
 
@@ -51,6 +51,7 @@ async def test_samples_alternate_between_models_and_a_group_may_hold_both(tmp_pa
     settings = json.loads((tmp_path / "two" / "settings.json").read_text())
     assert [m["model"] for m in settings["pipeline"]["consensus_models"]] == [RIGHT, WRONG]
     assert RunSettings.from_json(settings, tmp_path, "two").sample_models == (scripted(RIGHT), scripted(WRONG))
+    assert run_model(settings) == f"{RIGHT}+{WRONG}"  # the report's and viewer's name: never pooled with RIGHT's runs
     # the report: each model's samples one at a time, and the answers it wrote
     rows = {r["model"]: r for r in per_model(run["tasks"])}
     assert rows[RIGHT]["paper"] == Rate(4, 4) and rows[WRONG]["paper"] == Rate(0, 2)
