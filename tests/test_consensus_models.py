@@ -127,3 +127,22 @@ def test_the_viewer_names_each_samples_model() -> None:
     section = page.split("id='consensus'")[1]
     assert "<th>model</th>" in section and "<td>gpt-oss:20b</td>" in section
     assert "sample k written by model k mod 2" in section
+
+
+def test_the_command_line_gives_every_model_the_runs_settings_and_a_resume_its_new_server(tmp_path: Path) -> None:
+    from meceng.cli import build_parser
+    from meceng.cli.arguments import llm_settings, resumed_settings, run_settings
+
+    parser = build_parser()
+    args = parser.parse_args(["run", "--agent", "consensus", "--consensus-models", "a:1b, b:2b", "--host",
+                              "http://127.0.0.1:1", "--think", "on", "--out", str(tmp_path), "--name", "r"])
+    settings = run_settings(args, llm_settings(args))
+    assert [(m.model, m.backend, m.hosts, m.think, m.temperature) for m in settings.sample_models] == [
+        (name, "ollama", ("http://127.0.0.1:1",), True, 0.7) for name in ("a:1b", "b:2b")]
+    assert settings.llm == settings.consensus_models[0]
+    (tmp_path / "r").mkdir()
+    (tmp_path / "r" / "settings.json").write_text(json.dumps(settings.to_json()))
+    moved = resumed_settings(parser.parse_args(["run", "--resume", str(tmp_path / "r"), "--host", "http://127.0.0.1:2"]))
+    assert [m.hosts for m in moved.sample_models] == [("http://127.0.0.1:2",)] * 2
+    with pytest.raises(SystemExit):  # one model is not a run across models
+        parser.parse_args(["run", "--agent", "consensus", "--consensus-models", "a:1b"])

@@ -203,6 +203,9 @@ def resumed_settings(args: argparse.Namespace) -> RunSettings:
 
     settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
     if args.host:  # where the server is now: not part of what the run measures
-        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)),
+        hosts = tuple(args.host)  # every model's of a consensus run across models
+        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=hosts),
+                                       consensus_models=tuple(dataclasses.replace(m, hosts=hosts)
+                                                              for m in settings.consensus_models),
                                        retry_overflow=True)
     return dataclasses.replace(settings, progress=not args.no_progress)
