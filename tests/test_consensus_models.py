@@ -146,3 +146,15 @@ def test_the_command_line_gives_every_model_the_runs_settings_and_a_resume_its_n
     assert [m.hosts for m in moved.sample_models] == [("http://127.0.0.1:2",)] * 2
     with pytest.raises(SystemExit):  # one model is not a run across models
         parser.parse_args(["run", "--agent", "consensus", "--consensus-models", "a:1b"])
+
+
+def test_same_fault_models_may_each_repeat_a_fault_of_their_own() -> None:
+    from meceng.llm.backend_scripted import ScriptedBackend, ScriptedDraft, parse_scripted
+
+    drafts = {"t@0": (ScriptedDraft("a", "A", "x = 1"), ScriptedDraft("b", "B", "x = 2"))}
+    wrong = {d: {ScriptedBackend(f"scripted-same:p=0:d={d}", 42, drafts).answer("t@0", k, "gold")[1]
+                 for k in range(20)} for d in (0, 1, 2)}
+    assert wrong == {0: {"draft a [A]"}, 1: {"draft b [B]"}, 2: {"draft a [A]"}}  # d mod the task's drafts
+    assert parse_scripted("scripted-same:p=0.5") == parse_scripted("scripted-same:p=0.5:d=0")
+    with pytest.raises(ValueError, match="scripted-same:p=P"):
+        parse_scripted("scripted:p=0.5:d=1")  # a model whose faults are drawn at random has no one fault
