@@ -20,6 +20,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import re
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -43,7 +44,8 @@ async def one_row(out: Path, label: str, p: float, models: list[str], samples: i
     """One consensus run (across ``models`` when there are several: sample k by model k mod M)."""
     llms = tuple(LLMSettings(model=m, backend="scripted", temperature=0.7, seed=42 + seed) for m in models)
     settings = RunSettings(llm=llms[0], levels=("1", "2"), variations=variations, seed=seed, out=out,
-                           run_name=f"{label}-p{p:g}", progress=False, agent="consensus", samples=samples,
+                           run_name=re.sub(r"[^A-Za-z0-9.=-]+", "_", f"{label}-p{p:g}"), progress=False,
+                           agent="consensus", samples=samples,
                            consensus_models=llms if len(llms) > 1 else ())
     run = load_runs([await run_benchmark(settings)])[0]
     bins = calibration(run.tasks)
