@@ -266,8 +266,10 @@ async def _one(job: SweepJob, shared: SharedServices, servers: dict[str, Priorit
     screen.status(job, "starting")
     backend = None
     try:
-        # the scripted model needs the run's task instances: the run makes it (pipeline/scripted.py)
-        backend = None if settings.llm.backend == "scripted" else make_backend(settings.llm)
+        # the scripted model needs the run's task instances, a consensus run across models a backend
+        # per model: the run makes those (pipeline/run.py); their slots are not shared with other runs
+        backend = (None if settings.llm.backend == "scripted" or settings.consensus_models
+                   else make_backend(settings.llm))
         if isinstance(backend, EndpointBackend):
             backend.share_slots(job.slots(servers), rank)
         path = await run_benchmark(settings, backend=backend, shared=shared,

@@ -28,6 +28,18 @@ from typing import Any
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.llm.types import LLMSettings
 from meceng.sweep_hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
+from meceng.sweep_keys import (
+    GRID_KEYS,
+    SCOPE_KEYS,
+    agent_of,
+    as_tuple,
+    check_keys,
+    consensus_mode,
+    only_of,
+    temperature_of,
+    texts_of,
+    tools_of,
+)
 from meceng.tasks import default_registry
 
 BASE_CTX = 4096
@@ -83,6 +95,7 @@ class Study:
     drafts_per_task: int = 1
     texts: tuple[str, ...] = ("paper",)  # an axis: the paper's task texts and/or the open ones (issue 36)
     samples: int = 5  # agent = "consensus": independent programs per task
+    consensus: str = "each"  # "across": one consensus run over all the study's models (k mod M)
 
 
 @dataclass(frozen=True)
@@ -121,6 +134,22 @@ class GridPoint:
     drafts_per_task: int = 1
     texts: str = "paper"
     samples: int = 5
+    # a consensus run across models: the point of each model (``model`` is the first's); sample k is
+    # written by members[k mod M]
+    members: tuple[GridPoint, ...] = ()
+
+    def llms(self, llm_timeout_s: float = 600.0) -> tuple[LLMSettings, ...]:
+        """The settings of every model of a consensus run across models (``RunSettings.consensus_models``)."""
+        return tuple(member.llm(llm_timeout_s) for member in self.members)
+
+    @property
+    def model_points(self) -> tuple[GridPoint, ...]:
+        """The point of each model this run asks: its members, or itself."""
+        return self.members or (self,)
+
+    @property
+    def model_names(self) -> tuple[str, ...]:
+        return tuple(p.model.name for p in self.model_points)
 
     @property
     def default_sampling(self) -> bool:
@@ -145,7 +174,8 @@ class GridPoint:
     @property
     def name(self) -> str:
         temperature = "default" if self.default_sampling else f"{self.temperature:g}"
-        text = (f"{self.model.name}_T{temperature}_think-{self.think}_{self.select_template}_"
+        models = "-and-".join(m.model.name for m in self.members) or self.model.name
+        text = (f"{models}_T{temperature}_think-{self.think}_{self.select_template}_"
                 f"{self.code_template}_L{'-'.join(self.levels)}_v{self.variations}_s{self.seed}")
         if self.only:
             text += "_only-" + "-".join(self.only)
@@ -156,106 +186,46 @@ class GridPoint:
         if self.agent == "repair":
             text += f"_repair-tools-{'on' if self.repair_tools else 'off'}-d{self.drafts_per_task}"
         elif self.agent == "consensus":
-            text += f"_consensus-k{self.samples}"
+            text += f"_consensus-{'across-' if self.members else ''}k{self.samples}"
         elif self.agent != "pipeline":
             text += f"_agent-{self.agent}"
         return re.sub(r"[^A-Za-z0-9_.-]+", "-", text)
 
 
-def _tuple(value: Any) -> tuple[Any, ...]:
-    if value is None:
-        return ()
-    return tuple(value) if isinstance(value, list | tuple) else (value,)
-
-
-def _temperature(value: Any) -> float | None:
-    if value == "default":
-        return None
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise ValueError(f"temperature {value!r}: a number or \"default\"")
-    return float(value)
-
-
-def _check_keys(where: str, data: dict[str, Any], known: set[str]) -> None:
-    unknown = set(data) - known
-    if unknown:
-        raise ValueError(f"{where}: unknown keys {sorted(unknown)}")
-
-
-SCOPE_KEYS = {"levels", "only", "variations", "seed", "grid", "description", "agent", "tools", "drafts_per_task",
-              "texts", "samples"}
-AGENTS = ("pipeline", "loop", "repair", "consensus")
-GRID_KEYS = {"temperature", "think", "select_template", "code_template", "texts"}
-MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
-
-
-def _only(value: Any) -> tuple[str, ...]:
-    """A spec's ``only``: task keys, each one a task model (a typo must not shrink a study)."""
-    only = tuple(str(x) for x in _tuple(value))
-    default_registry().check(only)
-    return only
-
-
 def _study(name: str, data: dict[str, Any], defaults: dict[str, Any], models: tuple[ModelSpec, ...]) -> Study:
     grid = {**defaults.get("grid", {}), **data.get("grid", {})}
-    _check_keys(f"study {name} grid", grid, GRID_KEYS)
+    check_keys(f"study {name} grid", grid, GRID_KEYS)
     merged = {**defaults, **data}
-    levels = tuple(str(x) for x in _tuple(merged.get("levels", ["1", "2"])))
-    only = _only(merged.get("only", []))
+    levels = tuple(str(x) for x in as_tuple(merged.get("levels", ["1", "2"])))
+    only = only_of(merged.get("only", []))
     # consensus needs samples that differ: sampled at 0.7 unless the grid says otherwise
     default_t = 0.7 if merged.get("agent") == "consensus" else 0.0
     return Study(
         name=name, models=models,
-        temperatures=tuple(_temperature(t) for t in _tuple(grid.get("temperature", [default_t]))),
-        thinks=_tuple(grid.get("think", [False])),
-        select_templates=tuple(str(x) for x in _tuple(grid.get("select_template", [DEFAULT_SELECT]))),
-        code_templates=tuple(str(x) for x in _tuple(grid.get("code_template", [DEFAULT_CODE]))),
+        temperatures=tuple(temperature_of(t) for t in as_tuple(grid.get("temperature", [default_t]))),
+        thinks=as_tuple(grid.get("think", [False])),
+        select_templates=tuple(str(x) for x in as_tuple(grid.get("select_template", [DEFAULT_SELECT]))),
+        code_templates=tuple(str(x) for x in as_tuple(grid.get("code_template", [DEFAULT_CODE]))),
         levels=levels, only=only,
         variations=int(merged.get("variations", 20)), seed=int(merged.get("seed", 0)),
-        description=str(data.get("description", "")), agent=_agent(name, merged.get("agent", "pipeline")),
-        repair_tools=_tools(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
+        description=str(data.get("description", "")), agent=agent_of(name, merged.get("agent", "pipeline")),
+        repair_tools=tools_of(name, merged.get("tools", "on")), drafts_per_task=int(merged.get("drafts_per_task", 1)),
         samples=int(merged.get("samples", 5)),
-        texts=_texts(name, grid.get("texts", merged.get("texts", ["paper"])), levels, only),
+        consensus=consensus_mode(name, merged.get("consensus", "each"), merged.get("agent", "pipeline"), len(models)),
+        texts=texts_of(name, grid.get("texts", merged.get("texts", ["paper"])), levels, only),
     )
 
 
-def _texts(study: str, value: Any, levels: tuple[str, ...], only: tuple[str, ...]) -> tuple[str, ...]:
-    """A study's ``texts`` (``["paper", "open"]``): each a kind of task text its levels have; a
-    study of open texts on levels without them (3a, 3b) is refused here, not when its run starts."""
-    texts = tuple(str(x) for x in _tuple(value))
-    registry = default_registry()
-    for kind in texts:
-        try:
-            registry.with_texts(registry.select(levels, only or None), kind, levels, only)
-        except ValueError as exc:
-            raise ValueError(f"study {study}: texts = {kind!r}: {exc}") from None
-    if not texts:
-        raise ValueError(f"study {study}: texts = []; give \"paper\", \"open\" or both")
-    return texts
-
-
-def _agent(study: str, value: Any) -> str:
-    if value not in AGENTS:
-        raise ValueError(f"study {study}: agent = {value!r}; choose from {', '.join(AGENTS)}")
-    return str(value)
-
-
-def _tools(study: str, value: Any) -> bool:
-    """``tools = "on"`` / ``"off"`` (or true / false) of a repair study."""
-    if value in ("on", True):
-        return True
-    if value in ("off", False):
-        return False
-    raise ValueError(f"study {study}: tools = {value!r}; choose on or off")
+MODEL_KEYS = set(ModelSpec.__dataclass_fields__)
 
 
 def load_spec(path: Path) -> SweepSpec:
     """Read a sweep spec; unknown keys are an error (a typo must not silently change a study)."""
     data = tomllib.loads(path.read_text())
-    _check_keys(str(path), data, SCOPE_KEYS | {"models", "studies", "out", "workers", "exec_timeout_s"})
+    check_keys(str(path), data, SCOPE_KEYS | {"models", "studies", "out", "workers", "exec_timeout_s"})
     catalogue: dict[str, ModelSpec] = {}
     for entry in data.get("models", []):
-        _check_keys(f"{path}: model {entry.get('name')}", entry, MODEL_KEYS)
+        check_keys(f"{path}: model {entry.get('name')}", entry, MODEL_KEYS)
         entry = dict(entry)
         entry["hosts"] = tuple(entry.get("hosts", (DEFAULT_HOST,)))
         catalogue[entry["name"]] = ModelSpec(**entry)
@@ -265,11 +235,11 @@ def load_spec(path: Path) -> SweepSpec:
         name = str(entry.get("name", ""))
         if not name:
             raise ValueError(f"{path}: a study without a name")
-        _check_keys(f"{path}: study {name}", entry, SCOPE_KEYS | {"name", "models"})
-        missing = [m for m in _tuple(entry.get("models")) if m not in catalogue]
+        check_keys(f"{path}: study {name}", entry, SCOPE_KEYS | {"name", "models"})
+        missing = [m for m in as_tuple(entry.get("models")) if m not in catalogue]
         if missing:
             raise ValueError(f"{path}: study {name} names models not in [[models]]: {missing}")
-        chosen = tuple(catalogue[m] for m in _tuple(entry.get("models"))) or tuple(catalogue.values())
+        chosen = tuple(catalogue[m] for m in as_tuple(entry.get("models"))) or tuple(catalogue.values())
         studies.append(_study(name, entry, defaults, chosen))
     if not studies:
         studies.append(_study("sweep", {}, defaults, tuple(catalogue.values())))
@@ -288,16 +258,25 @@ def _think(model: ModelSpec, think: bool | str) -> bool | str:
     return think  # an explicit level ("low", "high") is taken as given
 
 
+def _point(study: Study, model: ModelSpec, temperature: float | None, think: bool | str, select: str, code: str,
+           texts: str) -> GridPoint:
+    return GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
+                     study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task,
+                     texts, study.samples)
+
+
 def study_points(study: Study) -> list[GridPoint]:
     """The study's runs; points that coincide (a hosted model at several temperatures it never
     receives) are one."""
     points = {}
+    across = study.consensus == "across"  # one run over all the models instead of one per model
     for model, temperature, think, select, code, texts in itertools.product(
-            study.models, study.temperatures, study.thinks, study.select_templates, study.code_templates,
-            study.texts):
-        point = GridPoint(model, temperature, _think(model, think), select, code, study.levels, study.only,
-                          study.variations, study.seed, study.agent, study.repair_tools, study.drafts_per_task,
-                          texts, study.samples)
+            study.models[:1] if across else study.models, study.temperatures, study.thinks, study.select_templates,
+            study.code_templates, study.texts):
+        axes = (temperature, think, select, code, texts)
+        point = _point(study, model, *axes)
+        if across:
+            point = replace(point, members=tuple(_point(study, m, *axes) for m in study.models))
         points.setdefault(point.name, point)
     return list(points.values())
 

@@ -8,7 +8,11 @@ draft when it is wrong. For each model and P in 0.3, 0.5, 0.7 one consensus run 
 seeded) is made; printed are the single-sample and the consensus accuracy (the paper's verdict and
 the behaviour verdict), the expected calibration error, and the accuracy per confidence bin.
 
-    python scripts/consensus_measure.py [--samples 5] [--variations 1] [--out DIR] [--json FILE]
+    python scripts/consensus_measure.py [--samples 5] [--variations 1] [--out DIR] [--json FILE] [--across]
+
+``--across``: for P in 0.3, 0.5, ``scripted-same:p=P`` alone against a consensus run across three
+same-fault models whose faults differ (``scripted-same:p=P:d=0``, ``d=1``, ``d=2``): does agreement
+between models see what agreement within one model cannot?
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import re
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -34,20 +39,30 @@ def percent(rate: Any) -> str:
     return "–" if rate.value is None else f"{100 * rate.value:.1f}"
 
 
-async def measure(out: Path, samples: int, variations: int, seed: int) -> list[dict[str, Any]]:
-    rows = []
-    for model in MODELS:
-        for p in PS:
-            name = f"{model}-p{p:g}"
-            llm = LLMSettings(model=f"{model}:p={p:g}", backend="scripted", temperature=0.7, seed=42 + seed)
-            settings = RunSettings(llm=llm, levels=("1", "2"), variations=variations, seed=seed, out=out,
-                                   run_name=name, progress=False, agent="consensus", samples=samples)
-            run = load_runs([await run_benchmark(settings)])[0]
-            bins = calibration(run.tasks)
-            rows.append({"model": model, "p": p, "tasks": accuracy(run.tasks)["consensus"].n, **accuracy(run.tasks),
-                         "ece_paper": calibration_error(bins), "ece_behaviour": calibration_error(bins, "behaviour"),
-                         "bins": bins})
-    return rows
+async def one_row(out: Path, label: str, p: float, models: list[str], samples: int, variations: int,
+                  seed: int) -> dict[str, Any]:
+    """One consensus run (across ``models`` when there are several: sample k by model k mod M)."""
+    llms = tuple(LLMSettings(model=m, backend="scripted", temperature=0.7, seed=42 + seed) for m in models)
+    settings = RunSettings(llm=llms[0], levels=("1", "2"), variations=variations, seed=seed, out=out,
+                           run_name=re.sub(r"[^A-Za-z0-9.=-]+", "_", f"{label}-p{p:g}"), progress=False,
+                           agent="consensus", samples=samples,
+                           consensus_models=llms if len(llms) > 1 else ())
+    run = load_runs([await run_benchmark(settings)])[0]
+    bins = calibration(run.tasks)
+    return {"model": label, "p": p, "tasks": accuracy(run.tasks)["consensus"].n, **accuracy(run.tasks),
+            "ece_paper": calibration_error(bins), "ece_behaviour": calibration_error(bins, "behaviour"), "bins": bins}
+
+
+async def measure(out: Path, samples: int, variations: int, seed: int, across: bool) -> list[dict[str, Any]]:
+    """The six rows of the README's table; ``across``: instead, one model that repeats one fault
+    against three that each repeat a fault of their own (``scripted-same:p=P:d=N``, N = 0, 1, 2)."""
+    if across:
+        return [await one_row(out, label, p, models, samples, variations, seed) for p in PS[:2]
+                for label, models in (("scripted-same", [f"scripted-same:p={p:g}"]),
+                                      ("3 x scripted-same d=0,1,2",
+                                       [f"scripted-same:p={p:g}:d={d}" for d in range(3)]))]
+    return [await one_row(out, model, p, [f"{model}:p={p:g}"], samples, variations, seed)
+            for model in MODELS for p in PS]
 
 
 def tables(rows: list[dict[str, Any]], samples: int) -> str:
@@ -74,11 +89,13 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--out", type=Path, default=None, help="keep the runs here (default: a temporary folder)")
     parser.add_argument("--json", type=Path, default=None)
+    parser.add_argument("--across", action="store_true",
+                        help="one same-fault model against three with a fault each, in one run across models")
     args = parser.parse_args()
     configure_logging(None)
     with tempfile.TemporaryDirectory() as tmp:
         out = args.out or Path(tmp)
-        rows = asyncio.run(measure(out, args.samples, args.variations, args.seed))
+        rows = asyncio.run(measure(out, args.samples, args.variations, args.seed, args.across))
     print(tables(rows, args.samples))
     if args.json:
         args.json.write_text(json.dumps([{k: (v.to_json() if hasattr(v, "to_json") else v) for k, v in r.items()

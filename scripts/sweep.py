@@ -186,12 +186,13 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
     for study in dict.fromkeys(item.study for item in planned):
         items = [i for i in planned if i.study == study]
         new = [i for i in items if i.shared_with is None]
-        summary.add_row(study, str(len({i.point.model.name for i in items})), str(len(items)), str(len(new)),
+        summary.add_row(study, str(len({m for i in items for m in i.point.model_names})), str(len(items)),
+                        str(len(new)),
                         f"{sum(point_workload(i.point)[0] for i in new):,}",
                         f"{sum(point_workload(i.point)[1] for i in new):,}")
     points = unique_points(planned)
     summary.add_section()
-    summary.add_row("total (each run once)", str(len({p.model.name for p in points})), str(len(planned)),
+    summary.add_row("total (each run once)", str(len({m for p in points for m in p.model_names})), str(len(planned)),
                     str(len(points)), f"{sum(point_workload(p)[0] for p in points):,}",
                     f"{sum(point_workload(p)[1] for p in points):,}")
     console.print(summary)
@@ -211,7 +212,7 @@ def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespac
             select_template=point.select_template, code_template=point.code_template,
             progress=not args.no_progress, resume=(run_dir / "journal.jsonl").exists(), executor=args.executor,
             agent=point.agent, repair_tools=point.repair_tools, drafts_per_task=point.drafts_per_task,
-            texts=point.texts, samples=point.samples)
+            texts=point.texts, samples=point.samples, consensus_models=point.llms())
         jobs.append(SweepJob(name, point.model.name, settings, point_workload(point)[0], point))
     return jobs
 
@@ -268,7 +269,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.name and len(points) > 1:
         print("error: --name needs a single grid point", file=sys.stderr)
         return 2
-    down = unreachable_hosts(points)
+    down = unreachable_hosts([m for p in points for m in p.model_points])  # every model of a run
     if down:
         print(f"no LLM server answers at {', '.join(down)}: start `ollama serve` there, or check the harness "
               "offline with: python scripts/sweep.py --model gold", file=sys.stderr)

@@ -39,6 +39,14 @@ def parse_only(values: list[str] | None) -> tuple[str, ...]:
     return only
 
 
+def parse_models(text: str) -> tuple[str, ...]:
+    """``--consensus-models a,b,c``: model names, at least two (one model is a plain consensus run)."""
+    models = tuple(x.strip() for x in text.split(",") if x.strip())
+    if len(models) < 2:
+        raise argparse.ArgumentTypeError("name two models or more, comma-separated")
+    return models
+
+
 def positive_int(text: str) -> int:
     value = int(text)
     if value < 1:
@@ -117,6 +125,9 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
                              "unless --temperature)")
     parser.add_argument("--samples", type=positive_int, default=5,
                         help="--agent consensus: independent programs per task")
+    parser.add_argument("--consensus-models", type=parse_models, default=(), metavar="A,B,...",
+                        help="--agent consensus across models: sample k is written by model k mod M of this list "
+                             "(each with the run's --backend/--host settings; --model is then not used)")
     parser.add_argument("--tools", choices=("on", "off"), default="on",
                         help="--agent repair: with the agent's tools (simulate, snapshot, ...) or a single answer")
     parser.add_argument("--drafts-per-task", type=positive_int, default=1,
@@ -168,8 +179,10 @@ def run_settings(args: argparse.Namespace, llm: LLMSettings, name: str | None = 
         raise SystemExit(f"error: unknown --code-template {args.code_template!r}; "
                          f"choose from {', '.join(CODE_TEMPLATES)}")
     only = parse_only(args.only)
+    # a consensus run across models: each model's settings as --model's would be, the first one the run's
+    models = tuple(llm_settings(args, model=m) for m in getattr(args, "consensus_models", ()))
     return RunSettings(
-        llm=llm, levels=args.levels, only=only,
+        llm=models[0] if models else llm, consensus_models=models, levels=args.levels, only=only,
         variations=args.variations, seed=args.seed, out=args.out, run_name=name or args.name,
         workers=args.workers or max(1, os.cpu_count() or 1), exec_timeout_s=args.timeout,
         select_template=args.select_template, code_template=args.code_template,
@@ -190,6 +203,9 @@ def resumed_settings(args: argparse.Namespace) -> RunSettings:
 
     settings = RunSettings.from_json(data, out=run_dir.parent, run_name=run_dir.name)
     if args.host:  # where the server is now: not part of what the run measures
-        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=tuple(args.host)),
+        hosts = tuple(args.host)  # every model's of a consensus run across models
+        settings = dataclasses.replace(settings, llm=dataclasses.replace(settings.llm, hosts=hosts),
+                                       consensus_models=tuple(dataclasses.replace(m, hosts=hosts)
+                                                              for m in settings.consensus_models),
                                        retry_overflow=True)
     return dataclasses.replace(settings, progress=not args.no_progress)

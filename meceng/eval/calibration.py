@@ -63,6 +63,26 @@ def calibration_error(rows: list[dict[str, Any]], verdict: str = "paper") -> flo
     return sum(r["n"] / total * abs((r[verdict].value or 0.0) - r["confidence"]) for r in rows if r["n"])
 
 
+def per_model(tasks: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """A consensus run across models (``--consensus-models``): per model, its samples' accuracy taken
+    one at a time and how many answers it wrote (the chosen sample was its); empty for a run whose
+    samples one model wrote. Lost samples are not counted."""
+    records = consensus_records(tasks)
+    samples = [s for t in records for s in t["consensus"].get("samples", []) if s.get("lost") is None]
+    models = list(dict.fromkeys(str(s["model"]) for s in samples if s.get("model")))
+    if len(models) < 2:
+        return []
+    answers = [next((s for s in t["consensus"].get("samples", []) if s.get("index") == t["consensus"].get("chosen")),
+                    {}) for t in records]
+    rows = []
+    for model in models:
+        own = [s for s in samples if s.get("model") == model and "overall" in s]
+        rows.append({"model": model, "paper": Rate(sum(bool(s["overall"]) for s in own), len(own)),
+                     "behaviour": Rate(sum(_behaves(s) for s in own), len(own)),
+                     "answers": Rate(sum(a.get("model") == model for a in answers), len(records))})
+    return rows
+
+
 def consensus_table(runs: list[Run]) -> list[dict[str, Any]]:
     """One row per consensus run: both accuracies, both verdicts, the calibration error."""
     rows = []
@@ -71,7 +91,8 @@ def consensus_table(runs: list[Run]) -> list[dict[str, Any]]:
             continue
         bins = calibration(run.tasks)
         rows.append({"run": run.label, "samples": run.settings.get("pipeline", {}).get("samples"),
-                     **accuracy(run.tasks), "bins": bins, "ece_paper": calibration_error(bins),
+                     **accuracy(run.tasks), "bins": bins, "models": per_model(run.tasks),
+                     "ece_paper": calibration_error(bins),
                      "ece_behaviour": calibration_error(bins, "behaviour")})
     return rows
 
@@ -90,9 +111,14 @@ def consensus_sections(runs: list[Run]) -> list[tuple[str, list[str], list[list[
                       ece(r["ece_behaviour"])] for r in table]
     bin_rows = [[r["run"], b["bin"], str(b["n"]), "–" if b["confidence"] is None else f"{b['confidence']:.2f}",
                  b["paper"].text(), b["behaviour"].text()] for r in table for b in r["bins"] if b["n"]]
+    model_rows = [[r["run"], m["model"], str(m["paper"].n), m["paper"].text(), m["behaviour"].text(),
+                   m["answers"].text()] for r in table for m in r["models"]]
+    across = [("Consensus across models: each model's samples one at a time, and the answers it wrote",
+               ["run", "model", "samples", "right (paper)", "right (behaviour)", "answers written"], model_rows)]
     return [("Consensus: the answer of the largest group against single samples (levels 1-2)",
              ["run", "K", "tasks", "consensus (paper)", "single sample (paper)", "consensus (behaviour)",
               "single sample (behaviour)", "calibration error (paper)", "calibration error (behaviour)"],
              accuracy_rows),
             ("Consensus: accuracy per confidence bin (calibrated: accuracy = mean confidence)",
-             ["run", "confidence", "tasks", "mean confidence", "right (paper)", "right (behaviour)"], bin_rows)]
+             ["run", "confidence", "tasks", "mean confidence", "right (paper)", "right (behaviour)"], bin_rows),
+            *(across if model_rows else [])]

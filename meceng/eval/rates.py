@@ -54,6 +54,15 @@ class Rate:
         return {"passed": self.passed, "n": self.n, "rate": self.value, "ci95": [low, high]}
 
 
+def run_model(settings: dict[str, Any]) -> str:
+    """A run's model as the report and viewer name it (from its settings.json); a consensus run
+    across models names them all (``a+b``), so its rates are never pooled with its first model's."""
+    models = settings.get("pipeline", {}).get("consensus_models")
+    if models:
+        return "+".join(str(m["model"]) for m in models)
+    return str(settings.get("llm", {}).get("model", "?"))
+
+
 @dataclass(frozen=True)
 class Run:
     path: Path
@@ -63,7 +72,7 @@ class Run:
 
     @property
     def model(self) -> str:
-        return str(self.settings["llm"]["model"])
+        return run_model(self.settings)
 
     @property
     def temperature(self) -> float:

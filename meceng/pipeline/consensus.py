@@ -20,7 +20,8 @@ from typing import Any
 from meceng.agents.steps import Generation, Selection, choose_components, generate_code
 from meceng.eval.behaviour import tolerance_for
 from meceng.eval.consensus import Consensus, consensus_of
-from meceng.llm.types import Backend, ChatRequest, ChatResponse
+from meceng.llm.ensemble import model_of_sample
+from meceng.llm.types import Backend, ChatRequest, ChatResponse, LLMSettings
 from meceng.tasks.base import TaskInstance
 
 from .grading import offload
@@ -67,11 +68,13 @@ async def draw(backend: Backend, instance: TaskInstance, kind: TaskKind, templat
     return Sample(index, selection, await generate_code(sampled, instance, kind.catalog, selection, templates[1]))
 
 
-def sample_json(sample: Sample, graded: Graded | None, consensus: Consensus, seed: int | None) -> dict[str, Any]:
-    """A sample in the record: its program, both verdicts against the ground truth, its group."""
+def sample_json(sample: Sample, graded: Graded | None, consensus: Consensus, llm: LLMSettings) -> dict[str, Any]:
+    """A sample in the record: the model that wrote it (``llm``, the k mod M rule's), its program,
+    both verdicts against the ground truth, its group."""
     generation = sample.generation
     block: dict[str, Any] = {
-        "index": sample.index, "seed": seed, "lost": sample.lost,
+        "index": sample.index, "model": llm.model,
+        "seed": None if llm.api_defaults else llm.sample_seed(sample.index), "lost": sample.lost,
         "components": list(sample.selection.names),
         "code": generation.code if generation is not None else None,
         "code_error": generation.error if generation is not None else None,
@@ -97,6 +100,10 @@ def _steps(sample: Sample) -> list[Selection | Generation]:
 async def consensus_flow(instance: TaskInstance, kind: TaskKind, ctx: Any) -> dict[str, Any]:
     """One task instance under ``--agent consensus`` (``ctx``: the flow's ``FlowContext``)."""
     settings, evaluator = ctx.settings, ctx.evaluator
+
+    def model(index: int) -> LLMSettings:
+        return model_of_sample(settings.sample_models, index)
+
     t0 = time.perf_counter()
     evaluator.prefetch(instance)
     templates = settings.templates(instance.kind)
@@ -108,7 +115,7 @@ async def consensus_flow(instance: TaskInstance, kind: TaskKind, ctx: Any) -> di
         first = samples[0]
         record = lost_record(instance, f"every sample lost: {first.lost}", _times(t0, t_llm),
                              selection=first.selection, generation=first.generation)
-        record["consensus"] = {"samples": [sample_json(s, None, Consensus((), None, 0.0, 0), None)
+        record["consensus"] = {"samples": [sample_json(s, None, Consensus((), None, 0.0, 0), model(s.index))
                                            for s in samples], "k": settings.samples}
         return record
     # the same program (and components) is run and graded once
@@ -143,9 +150,8 @@ async def consensus_flow(instance: TaskInstance, kind: TaskKind, ctx: Any) -> di
         record["files"]["traces"] = traces
     record["consensus"] = {
         "k": settings.samples, **consensus.to_json(),
-        "samples": [sample_json(s, graded.get(s.index), consensus,
-                                None if settings.llm.api_defaults else settings.llm.sample_seed(s.index))
-                    for s in samples],
+        **({"models": [m.model for m in settings.consensus_models]} if settings.consensus_models else {}),
+        "samples": [sample_json(s, graded.get(s.index), consensus, model(s.index)) for s in samples],
     }
     return record
 

@@ -20,8 +20,9 @@ from typing import Any
 
 from meceng.eval.chain import Tolerances
 from meceng.llm.cache import CachedBackend, ResponseCache
+from meceng.llm.ensemble import EnsembleBackend
 from meceng.llm.factory import make_backend
-from meceng.llm.types import LOCAL_BACKENDS, Backend
+from meceng.llm.types import LOCAL_BACKENDS, Backend, LLMSettings
 from meceng.logs import get_logger
 from meceng.progress import Advance
 from meceng.tasks.base import TaskInstance
@@ -82,13 +83,17 @@ async def run_benchmark(
         log.warning("task models without an open text are left out of this run", texts=settings.texts,
                     left_out=without_text)
     instances = registry.instances(models, settings.seed, settings.variations, settings.texts)
+    if settings.consensus_models and settings.agent != "consensus":
+        raise ValueError("several models in one run (--consensus-models) are a consensus run: --agent consensus")
     own_backend = backend is None
-    if backend is None and settings.llm.backend == "scripted":
-        backend = scripted_backend(settings.llm, instances)
-    backend = backend or make_backend(settings.llm)  # a missing API key stops here, before any file is written
+    if backend is None and len(settings.consensus_models) > 1:  # sample k by model k mod M (llm/ensemble.py)
+        backend = EnsembleBackend([(m, _backend(m, instances)) for m in settings.consensus_models])
+    # a missing API key stops here, before any file is written
+    backend = backend or _backend(settings.llm, instances)
     started = time.time()
     stamp = dt.datetime.now().strftime("%Y%m%d-%H%M%S")
-    run_dir = settings.out / (settings.run_name or f"{stamp}_{safe_name(settings.llm.model)}")
+    models = "+".join(m.model for m in settings.sample_models)  # a consensus run across models names them all
+    run_dir = settings.out / (settings.run_name or f"{stamp}_{safe_name(models)}")
     run_dir.mkdir(parents=True, exist_ok=True)
     lock = RunLock(run_dir)
     lock.acquire()  # another process on this folder: RunBusy, nothing touched
@@ -99,6 +104,11 @@ async def run_benchmark(
     finally:
         beat.cancel()
         lock.release()
+
+
+def _backend(llm: LLMSettings, instances: list[TaskInstance]) -> Backend:
+    """The backend of one model: the scripted one needs the run's instances (pipeline/scripted.py)."""
+    return scripted_backend(llm, instances) if llm.backend == "scripted" else make_backend(llm)
 
 
 async def _heartbeat(lock: RunLock) -> None:
@@ -123,7 +133,10 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
     done_keys = {k for k, r in kept.items() if not r.get("origin")}
     todo = [i for i in instances if i.key not in done_keys]
     cache = ResponseCache(run_dir / "responses.jsonl")
-    backend = CachedBackend(backend, cache, settings.llm)
+    if isinstance(backend, EnsembleBackend):  # each model's answers under its own keys
+        backend = backend.wrapped(lambda inner, llm: CachedBackend(inner, cache, llm))
+    else:
+        backend = CachedBackend(backend, cache, settings.llm)
     own_pool = shared is None and settings.executor == "fork"
     pool = WarmPool(child_env()) if own_pool else (shared.pool if shared is not None else None)
     evaluator = Evaluator(settings.workers, ExecutionLimits(timeout_s=settings.exec_timeout_s),
@@ -133,7 +146,7 @@ async def _run_in(run_dir: Path, settings: RunSettings, instances: list[TaskInst
                           store=shared.store if shared is not None else None,
                           grading=shared.grading if shared is not None else grading_pool(settings.workers))
     # a stack that cannot grade stops here, before any LLM request (a gold run asks no server)
-    if settings.preflight and settings.llm.backend not in LOCAL_BACKENDS and todo:
+    if settings.preflight and todo and any(m.backend not in LOCAL_BACKENDS for m in settings.sample_models):
         try:
             await ensure_stack(todo, evaluator)
         except BaseException:

@@ -42,6 +42,9 @@ class RunSettings:
     repair_tools: bool = True  # --agent repair: the agent's tools, or a single answer
     drafts_per_task: int = 1
     samples: int = 5  # --agent consensus: independent programs per task
+    # --agent consensus across models: sample k is written by model k mod M (llm/ensemble.py); empty:
+    # every sample by ``llm``. When given, ``llm`` is its first model (the run's name and window)
+    consensus_models: tuple[LLMSettings, ...] = ()
     max_rounds: int = 6
     token_budget: int = 30000
     part_select_template: str = DEFAULT_PART_SELECT
@@ -54,11 +57,9 @@ class RunSettings:
     @classmethod
     def from_json(cls, data: dict[str, Any], out: Path, run_name: str) -> RunSettings:
         """Rebuild the settings a run was started with (for ``--resume``)."""
-        llm = dict(data["llm"])
-        llm["hosts"] = tuple(llm["hosts"])
         pipeline = data["pipeline"]
         return cls(
-            llm=LLMSettings(**llm), levels=tuple(pipeline["levels"]), only=tuple(pipeline["only"]),
+            llm=_llm(data["llm"]), levels=tuple(pipeline["levels"]), only=tuple(pipeline["only"]),
             variations=pipeline["variations"], seed=pipeline["seed"], out=out, run_name=run_name,
             workers=pipeline["workers"], exec_timeout_s=pipeline["exec_timeout_s"],
             solution_tolerance=pipeline["solution_tolerance"], select_template=data["prompt"]["select_template"],
@@ -67,6 +68,7 @@ class RunSettings:
             max_rounds=pipeline.get("max_rounds", 6), token_budget=pipeline.get("token_budget", 30000),
             repair_tools=pipeline.get("repair_tools", True), drafts_per_task=pipeline.get("drafts_per_task", 1),
             samples=pipeline.get("samples", 5),
+            consensus_models=tuple(_llm(m) for m in pipeline.get("consensus_models", ())),
             part_timeout_s=pipeline.get("part_timeout_s", 300.0), texts=pipeline.get("texts", "paper"),
             part_select_template=data["prompt"].get("part_select_template", DEFAULT_PART_SELECT),
             part_code_template=data["prompt"].get("part_code_template", DEFAULT_PART_CODE),
@@ -83,14 +85,26 @@ class RunSettings:
                 "seed": self.seed, "workers": self.workers, "exec_timeout_s": self.exec_timeout_s,
                 "solution_tolerance": self.solution_tolerance, "part_timeout_s": self.part_timeout_s,
                 "texts": self.texts,
+                # only when given: the settings of every earlier run stay as they were
+                **({"consensus_models": [m.to_json() for m in self.consensus_models]}
+                   if self.consensus_models else {}),
             },
             "prompt": {"select_template": self.select_template, "code_template": self.code_template,
                        "part_select_template": self.part_select_template,
                        "part_code_template": self.part_code_template},
         }
 
+    @property
+    def sample_models(self) -> tuple[LLMSettings, ...]:
+        """The models that write a consensus run's samples, in the order of the k mod M rule."""
+        return self.consensus_models or (self.llm,)
+
     def templates(self, kind: str) -> tuple[str, str]:
         """The (selection, code) prompt templates for a task kind: parts have their own."""
         if kind == "part":
             return self.part_select_template, self.part_code_template
         return self.select_template, self.code_template
+
+
+def _llm(data: dict[str, Any]) -> LLMSettings:
+    return LLMSettings(**{**data, "hosts": tuple(data["hosts"])})

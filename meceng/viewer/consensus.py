@@ -40,10 +40,17 @@ def consensus_section(block: dict[str, Any]) -> str:
             f"{_esc(', '.join(str(len(g)) for g in groups) or 'none')})</td></tr>"
             f"<tr><th>answer</th><td>sample #{_esc(chosen)} of group 1</td></tr>"
             f"<tr><th>confidence</th><td><b>{_esc(block.get('confidence'))}</b> (the largest group's share; the "
-            f"grouping never saw the ground truth)</td></tr></table>")
+            f"grouping never saw the ground truth)</td></tr>")
+    if block.get("models"):  # a consensus run across models (--consensus-models)
+        models = block["models"]
+        head += (f"<tr><th>models</th><td>{_esc(', '.join(models))} (sample k written by model k mod "
+                 f"{len(models)})</td></tr>")
+    head += "</table>"
     bars = "".join(f"<span class='cgroup' style='background:{_group_colour(g)};flex:{len(members)}'>"
                    f"group {g + 1}: {len(members)} sample{'s' if len(members) != 1 else ''}</span>"
                    for g, members in enumerate(groups))
+    # which model wrote each sample (``model``, recorded since consensus across models; k mod M)
+    by_model = any(s.get("model") for s in samples)
     rows = []
     for s in samples:
         cls, words = _verdict(s)
@@ -54,10 +61,12 @@ def consensus_section(block: dict[str, Any]) -> str:
                if group is not None else "–")
         mark = " ← answer" if s.get("index") == chosen else ""
         rows.append(f"<tr class='{cls}'><td>#{_esc(s.get('index'))}{_esc(mark)}</td><td>{tag}</td>"
-                    f"<td>{_esc(s.get('seed'))}</td><td>{_esc(s.get('endpoint') or '')}</td>"
+                    + (f"<td>{_esc(s.get('model') or '–')}</td>" if by_model else "")
+                    + f"<td>{_esc(s.get('seed'))}</td><td>{_esc(s.get('endpoint') or '')}</td>"
                     f"<td>{'yes' if s.get('ran') else 'no'}</td><td>{_esc(words)}</td>"
                     f"<td class='{status}'>{_esc(behaviour)}</td></tr>")
-    table = ("<table class='consensus'><tr><th>sample</th><th>group</th><th>seed</th><th>answered by</th>"
+    table = ("<table class='consensus'><tr><th>sample</th><th>group</th>" + ("<th>model</th>" if by_model else "")
+             + "<th>seed</th><th>answered by</th>"
              "<th>ran</th><th>paper's verdict (ground truth)</th><th>behaviour (ground truth)</th></tr>"
              + "".join(rows) + "</table>")
     out = [head, f"<div class='cbars'>{bars}</div>", table]

@@ -15,6 +15,7 @@ from typing import Any
 
 from meceng.eval.chain import BEHAVIOUR_STAGE, RIGID_STAGES
 from meceng.eval.parts import PART_STAGES
+from meceng.eval.rates import run_model
 from meceng.jsonl import read_jsonl
 from meceng.pipeline.rundir import record_key
 from meceng.pipeline.traces import safe_key
@@ -41,7 +42,7 @@ class ViewRun:
 
     @property
     def model(self) -> str:
-        return str(self.settings.get("llm", {}).get("model", "?"))
+        return run_model(self.settings)
 
     @property
     def texts(self) -> str:
