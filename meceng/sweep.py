@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
-from meceng.llm.types import LLMSettings
+from meceng.llm.types import LLMSettings, backend_for
 from meceng.sweep_hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
 from meceng.sweep_keys import (
     GRID_KEYS,
@@ -163,7 +163,7 @@ class GridPoint:
 
     def llm(self, llm_timeout_s: float = 600.0) -> LLMSettings:
         num_ctx, num_predict = self.token_limits()
-        backend = "gold" if self.model.name == "gold" else self.model.backend
+        backend = backend_for(self.model.name, self.model.backend)
         return LLMSettings(model=self.model.name, backend=backend, hosts=self.model.hosts,
                            temperature=0.0 if self.temperature is None else self.temperature,
                            think=self.think, num_ctx=num_ctx, num_predict=num_predict,

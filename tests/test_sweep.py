@@ -186,3 +186,11 @@ def test_slurm_array_variables_choose_the_shard_and_dry_run_json_prints_it(tmp_p
     whole = json.loads(sweep("--spec", str(PAPER), "--dry-run", "--json", "--out", str(tmp_path)).stdout)
     assert sorted(folders) == sorted(run["folder"] for run in whole["runs"]) and len(folders) == 171
     assert sweep("--spec", str(PAPER), "--dry-run", "--shard", "3/3").returncode == 2
+
+
+def test_a_scripted_model_in_a_sweep_answers_in_process_like_gold() -> None:
+    """``--model scripted:p=0.5`` beside an Ollama model: its point runs on the scripted backend
+    (no server to probe), the other on the backend asked (it was sent to Ollama and refused offline)."""
+    points = [GridPoint(ModelSpec(name=name, backend="ollama"), 0.0, False, "CI1", "MBS1")
+              for name in ("scripted:p=0.5", "scripted-same:p=0.3", "gold", "qwen3:8b")]
+    assert [p.llm().backend for p in points] == ["scripted", "scripted", "gold", "ollama"]

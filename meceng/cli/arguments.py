@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
-from meceng.llm.types import BACKENDS, DEFAULT_HOSTS, LLMSettings
+from meceng.llm.types import BACKENDS, DEFAULT_HOSTS, LLMSettings, backend_for
 
 if TYPE_CHECKING:
     from meceng.pipeline import RunSettings
@@ -147,11 +147,7 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
 def llm_settings(args: argparse.Namespace, model: str | None = None, temperature: float | None = None,
                  think: bool | str | None = None) -> LLMSettings:
     model = model or args.model
-    backend = args.backend or ("gold" if model == "gold" else "ollama")
-    if model == "gold":
-        backend = "gold"
-    if model.startswith("scripted"):  # scripted:p=P, scripted-same:p=P (llm/backend_scripted.py)
-        backend = "scripted"
+    backend = backend_for(model, args.backend)
     if temperature is None:
         temperature = args.temperature
     if temperature is None:  # independent samples need sampling: consensus draws at 0.7 by default

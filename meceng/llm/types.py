@@ -221,6 +221,17 @@ DEFAULT_HOSTS = {"ollama": "http://127.0.0.1:11434", "openai": "https://api.open
 KEY_VARIABLES = {"openai": "OPENAI_API_KEY", "anthropic": "ANTHROPIC_API_KEY"}
 
 
+def backend_for(model: str, asked: str | None) -> str:
+    """The backend a model name needs: ``gold`` and the scripted models (``scripted:p=P``,
+    ``scripted-same:p=P``) answer in this process whatever backend was asked; others take the one
+    asked, Ollama by default."""
+    if model == "gold":
+        return "gold"
+    if model.startswith("scripted"):
+        return "scripted"
+    return asked or "ollama"
+
+
 def api_key(settings: LLMSettings) -> str | None:
     """The key from the environment variable the settings name, or the backend's conventional one."""
     import os
