@@ -63,7 +63,7 @@ def consensus_section(block: dict[str, Any]) -> str:
         rows.append(f"<tr class='{cls}'><td>#{_esc(s.get('index'))}{_esc(mark)}</td><td>{tag}</td>"
                     + (f"<td>{_esc(s.get('model') or '–')}</td>" if by_model else "")
                     + f"<td>{_esc(s.get('seed'))}</td><td>{_esc(s.get('endpoint') or '')}</td>"
-                    f"<td>{'yes' if s.get('ran') else 'no'}</td><td>{_esc(words)}</td>"
+                    f"<td>{'yes' if s.get('ran') else 'no'}</td><td class='verdict'>{_esc(words)}</td>"
                     f"<td class='{status}'>{_esc(behaviour)}</td></tr>")
     table = ("<table class='consensus'><tr><th>sample</th><th>group</th>" + ("<th>model</th>" if by_model else "")
              + "<th>seed</th><th>answered by</th>"
