@@ -19,10 +19,10 @@ import time
 from dataclasses import replace
 
 from meceng.eval.behaviour import compare_behaviour, tolerance_for
-from meceng.pipeline.evaluation import MOTION_SAMPLES
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import ExecutionLimits
 from meceng.tools.executor import child_env, execute
+from meceng.tools.recording import MOTION_SAMPLES
 from meceng.tools.warm import WarmPool
 
 SLUGS = "single_pendulum,double_pendulum_rigid_bodies,slider_crank_rigid_bodies,newtons_cradle," \

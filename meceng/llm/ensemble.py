@@ -15,9 +15,14 @@ from collections.abc import Callable, Sequence
 from meceng.llm.types import Backend, ChatRequest, ChatResponse, LLMSettings
 
 
+def member_of_sample(count: int, sample: int | None) -> int:
+    """Which of ``count`` models writes sample ``sample`` (None: a request that is no sample, the first)."""
+    return (sample or 0) % count
+
+
 def model_of_sample(models: Sequence[LLMSettings], sample: int | None) -> LLMSettings:
-    """The model that writes sample ``sample`` (None: a request that is no sample, the first model)."""
-    return models[(sample or 0) % len(models)]
+    """The model that writes sample ``sample``."""
+    return models[member_of_sample(len(models), sample)]
 
 
 class EnsembleBackend:
@@ -39,8 +44,7 @@ class EnsembleBackend:
         return EnsembleBackend([(settings, wrap(backend, settings)) for settings, backend in self.members])
 
     async def chat(self, request: ChatRequest) -> ChatResponse:
-        index = (request.sample or 0) % len(self.members)
-        return await self.members[index][1].chat(request)
+        return await self.members[member_of_sample(len(self.members), request.sample)][1].chat(request)
 
     async def aclose(self) -> None:
         for _, backend in self.members:

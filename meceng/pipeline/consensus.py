@@ -120,16 +120,16 @@ async def consensus_flow(instance: TaskInstance, kind: TaskKind, ctx: Any) -> di
         return record
     # the same program (and components) is run and graded once
     jobs: dict[tuple[Any, ...], asyncio.Task[Graded]] = {}
+    job_of: dict[int, asyncio.Task[Graded]] = {}
     for s in answered:
         assert s.generation is not None
         key = (s.generation.code, s.selection.names, s.generation.error)
         if key not in jobs:
             jobs[key] = asyncio.ensure_future(kind.grade(instance, s.generation.code, s.selection.names,
                                                          s.generation.error, keep=False))
+        job_of[s.index] = jobs[key]
     await asyncio.gather(*jobs.values())
-    graded: dict[int, Graded] = {
-        s.index: jobs[(s.generation.code, s.selection.names, s.generation.error)].result()
-        for s in answered if s.generation is not None}
+    graded: dict[int, Graded] = {index: job.result() for index, job in job_of.items()}
     motions = [graded[s.index].candidate.motion if s.index in graded else None for s in samples]
     programs = [s.generation.code if s.generation is not None else None for s in samples]
     lost = [s.lost is not None for s in samples]

@@ -33,8 +33,6 @@ from meceng.tools.warm import WarmPool
 from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
 
-__all__ = ["MOTION_SAMPLES", "REFINE", "Evaluator", "ReferenceCache", "not_run", "refined"]
-
 
 class ReferenceCache:
     """Ground-truth executions, run once per task instance and shared by everyone who asks."""
