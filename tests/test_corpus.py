@@ -155,6 +155,7 @@ class CorpusModel:
 
 
 @pytest.mark.slow
+@pytest.mark.timeout(900)  # ~225 s alone on 2 cores; about twice that beside another slow test (xdist)
 async def test_fake_ollama_runs_give_every_label(tmp_path: Path) -> None:
     registry = default_registry()
     for k, group in enumerate(rounds(ANSWERS)):
