@@ -32,7 +32,7 @@ from rich.table import Table
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.cli.arguments import parse_only
 from meceng.farm import SweepJob, run_sweep
-from meceng.llm.types import DEFAULT_HOSTS, backend_for
+from meceng.llm.types import DEFAULT_HOSTS
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
 from meceng.pipeline.preflight import StackUnusable
@@ -149,7 +149,8 @@ def apply_flags(spec: SweepSpec, args: argparse.Namespace) -> SweepSpec:
     if args.model:
         backend = args.backend or "ollama"
         hosts = tuple(args.host) if args.host else (DEFAULT_HOSTS[backend],)
-        models = tuple(ModelSpec(name=m, backend=backend_for(m, backend), hosts=hosts,
+        # gold and scripted models find their own backend where a point becomes settings (GridPoint.llm)
+        models = tuple(ModelSpec(name=m, backend=backend, hosts=hosts,
                                  batch_size=args.batch_size or 4, vision=args.vision,
                                  api_defaults=args.api_defaults or backend == "anthropic") for m in args.model)
     only = parse_only(args.only) if args.only else None
