@@ -1,5 +1,5 @@
 #!/usr/bin/env python
-"""Sweep figures (``meceng.farm``), measured side by side in one run:
+"""Sweep figures (``meceng.sweeps.farm``), measured side by side in one run:
 
 1. concurrency: 4 models on 4 fake Ollama servers (one model each, one request at a time, a fixed
    latency); each model's run alone, then the 4 as one sweep: the sweep's wall over the longest
@@ -33,9 +33,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from fake_ollama import FakeOllama, chat_reply, prompted_instance
 
 from meceng.agents.prompts import gold_code, gold_selection
-from meceng.farm import SweepJob, run_sweep
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, rescore, run_benchmark
+from meceng.sweeps.farm import SweepJob, run_sweep
 from meceng.tasks.registry import default_registry
 
 RIGID = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")

@@ -11,7 +11,7 @@ Flags override every chosen study; --model, --temperature, --think, --select-tem
 --code-template may be repeated and replace that axis of the grid. A grid point two studies
 share runs once. Run folders under --out are named from their settings: a finished point is
 skipped, an interrupted one resumed. Runs whose servers are free go at the same time (see
-meceng.farm), their programs on one worker pool; ground truths are executed once into the
+meceng.sweeps.farm), their programs on one worker pool; ground truths are executed once into the
 reference store (OUT/references) and reused by every run and later sweep.
 """
 
@@ -31,13 +31,13 @@ from rich.table import Table
 
 from meceng.cli import exit_now, parse_levels, parse_think, positive_int, print_summary
 from meceng.cli.arguments import parse_only
-from meceng.farm import SweepJob, run_sweep
 from meceng.llm.types import DEFAULT_HOSTS
 from meceng.logs import configure_logging
 from meceng.pipeline import RunSettings
 from meceng.pipeline.preflight import StackUnusable
-from meceng.shard import Shard, pick
-from meceng.sweep import (
+from meceng.sweeps.farm import SweepJob, run_sweep
+from meceng.sweeps.shard import Shard, pick
+from meceng.sweeps.spec import (
     GridPoint,
     ModelSpec,
     PlannedRun,

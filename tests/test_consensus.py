@@ -215,7 +215,7 @@ def test_the_viewer_shows_the_groups_the_answer_and_each_samples_verdicts() -> N
 
 
 def test_a_sweep_study_asks_for_consensus_at_a_sampling_temperature(tmp_path: Path) -> None:
-    from meceng.sweep import load_spec, study_points
+    from meceng.sweeps.spec import load_spec, study_points
 
     spec = tmp_path / "consensus.toml"
     spec.write_text('[[models]]\nname = "qwen3:8b"\n[[studies]]\nname = "vote"\nagent = "consensus"\nsamples = 3\n'

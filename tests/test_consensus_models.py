@@ -93,7 +93,7 @@ def test_several_models_are_a_consensus_run_only(tmp_path: Path) -> None:
 
 
 def test_a_sweep_study_across_models_is_one_run(tmp_path: Path) -> None:
-    from meceng.sweep import load_spec, study_points
+    from meceng.sweeps.spec import load_spec, study_points
 
     spec = tmp_path / "across.toml"
     spec.write_text('[[models]]\nname = "qwen3:8b"\n[[models]]\nname = "gpt-oss:20b"\nthink_off = "low"\n'

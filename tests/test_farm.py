@@ -1,4 +1,4 @@
-"""A sweep's runs at the same time (meceng.farm): runs on different servers overlap, a shared
+"""A sweep's runs at the same time (meceng.sweeps.farm): runs on different servers overlap, a shared
 server never gets more requests than its slots and never two models mixed, and the verdicts are
 those of runs one after another without the reference store."""
 
@@ -17,9 +17,9 @@ from fake_ollama import FakeOllama, chat_reply, prompted_instance
 from records import normalized
 
 from meceng.agents.prompts import gold_code, gold_selection
-from meceng.farm import SweepJob, run_sweep, server_groups
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, run_benchmark
+from meceng.sweeps.farm import SweepJob, run_sweep, server_groups
 from meceng.tasks import default_registry
 
 ONLY = ("3", "11")

@@ -22,7 +22,11 @@ ALLOWED: dict[str, set[str]] = {
     "agents": {"inspect", "catalog", "llm", "tools", "tasks", "eval"},  # eval: compare's agreement of two programs
     "pipeline": {"agents", "inspect", "catalog", "llm", "eval", "tools", "tasks"},
     "viewer": {"pipeline", "eval", "inspect", "tasks"},
+    "sweeps": {"pipeline", "agents", "llm", "tools", "tasks"},  # agents: the prompt variants' names
+    "report": {"eval"},
 }
+#: the package root keeps its face, ``__main__`` and the helpers every room shares; nothing else
+ROOT_MODULES = {"meceng", "meceng.__main__", "meceng.logs", "meceng.jsonl", "meceng.syntax", "meceng.progress"}
 HELPERS = {"meceng.logs", "meceng.jsonl", "meceng.syntax", "meceng.progress"}
 MAX_LINES = 350
 
@@ -80,6 +84,11 @@ def test_rooms_import_only_what_the_architecture_allows() -> None:
         if other not in ALLOWED[room] or (room == "eval" and target != "meceng.tools.execution"):
             wrong.append(f"{source} -> {target}")
     assert wrong == []
+
+
+def test_the_package_root_holds_only_its_face_and_shared_helpers() -> None:
+    root = {name for name in _modules() if name.count(".") <= 1 and not (PACKAGE / name.rpartition(".")[2]).is_dir()}
+    assert root == ROOT_MODULES
 
 
 def test_no_module_past_350_lines() -> None:

@@ -17,13 +17,13 @@ from meceng.cli import main
 from meceng.eval.aggregate import stage_rates
 from meceng.eval.chain import BEHAVIOUR_STAGE, StageResult, Tolerances, Verdict, by_behaviour
 from meceng.eval.rates import load_runs
-from meceng.eval.report import texts_table
+from meceng.eval.tables import texts_table
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import RunSettings, instance_prompts, run_benchmark
 from meceng.pipeline.evaluation import Evaluator
 from meceng.pipeline.records import task_record
 from meceng.report import build_report
-from meceng.sweep import load_spec, study_points
+from meceng.sweeps.spec import load_spec, study_points
 from meceng.tasks.alternatives import alternatives_of
 from meceng.tasks.base import TaskModel
 from meceng.tasks.registry import TaskRegistry, default_registry

@@ -81,10 +81,10 @@ def test_an_unknown_library_still_is_named_and_no_library_is_invented() -> None:
 async def test_a_sweep_without_libgl_stops_before_any_run_asks_its_server(tmp_path: Path,
                                                                          monkeypatch: pytest.MonkeyPatch) -> None:
     """Once per sweep, before any run: the sweep raises, no run folder gets a record, no request."""
-    from meceng.farm import SweepJob, run_sweep
     from meceng.llm.types import LLMSettings
     from meceng.pipeline import RunSettings
     from meceng.pipeline.preflight import StackUnusable
+    from meceng.sweeps.farm import SweepJob, run_sweep
 
     monkeypatch.setenv("PYTHONPATH", no_libgl(tmp_path)["PYTHONPATH"])  # what the sandbox's children get
     async with FakeOllama(lambda body: (200, openai_reply("never"), {})) as server:

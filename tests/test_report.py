@@ -101,7 +101,7 @@ def test_level3_tables_count_parts_and_assemblies_apart(tmp_path) -> None:
     import json as _json
 
     from meceng.eval.rates import load_runs
-    from meceng.eval.report import flexible_table, flexible_timing_table
+    from meceng.eval.tables import flexible_table, flexible_timing_table
 
     def part(ok: bool, origin: str) -> dict:
         return {"level": "3a", "slug": "p", "seed": 0, "origin": origin, "overall": ok, "first_failure": None,
@@ -139,7 +139,7 @@ def test_rigid_tables_count_levels_1_and_2_only(tmp_path) -> None:
     stage of that name and must not count as a failed selection; a flexible-only run has no such
     sections at all."""
     from meceng.eval.rates import load_runs
-    from meceng.eval.report import component_series, error_category_table, series, thinking_table
+    from meceng.eval.tables import component_series, error_category_table, series, thinking_table
     from meceng.report import build_report
 
     rigid = {"level": "1", "slug": "r", "seed": 0, "overall": True, "first_failure": None,

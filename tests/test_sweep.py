@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from meceng.llm.types import LLMSettings
-from meceng.shard import Shard, split
-from meceng.sweep import GridPoint, ModelSpec, load_spec, plan, point_workload, study_points, unique_points
+from meceng.sweeps.shard import Shard, split
+from meceng.sweeps.spec import GridPoint, ModelSpec, load_spec, plan, point_workload, study_points, unique_points
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER = ROOT / "sweeps" / "paper.toml"

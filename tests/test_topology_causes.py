@@ -7,7 +7,7 @@ from typing import Any
 
 import pytest
 
-from meceng.eval.report import topology_cause_rows
+from meceng.eval.tables import topology_cause_rows
 from meceng.pipeline import evaluate_program
 from meceng.tasks.registry import default_registry
 

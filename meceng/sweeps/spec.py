@@ -27,8 +27,8 @@ from typing import Any
 
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.llm.types import LLMSettings, backend_for
-from meceng.sweep_hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
-from meceng.sweep_keys import (
+from meceng.sweeps.hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
+from meceng.sweeps.keys import (
     GRID_KEYS,
     SCOPE_KEYS,
     agent_of,

@@ -10,7 +10,7 @@ import httpx
 
 
 class Point(Protocol):
-    """A sweep's grid point as far as probing its servers goes (``meceng.sweep.GridPoint``)."""
+    """A sweep's grid point as far as probing its servers goes (``meceng.sweeps.spec.GridPoint``)."""
 
     model: Any  # its ``hosts``
 

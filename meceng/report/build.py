@@ -16,7 +16,7 @@ from typing import Any
 from meceng.eval.calibration import consensus_sections
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.rates import Rate, Run, load_runs
-from meceng.eval.report import (
+from meceng.eval.tables import (
     FLEXIBLE_COLUMNS,
     RIGID_COLUMNS,
     TEXTS_HEADERS,
@@ -37,7 +37,7 @@ from meceng.eval.report import (
     topology_cause_table,
 )
 from meceng.eval.topology import CAUSES as TOPOLOGY_CAUSES
-from meceng.report_plots import bar_plot, difficulty_plot, line_plot, release_plot
+from meceng.report.plots import bar_plot, difficulty_plot, line_plot, release_plot
 
 
 def _table(headers: list[str], rows: list[list[str]], links: list[str] | None = None) -> tuple[str, str]:

@@ -42,7 +42,7 @@ from meceng.pipeline.preflight import ensure_sweep_stack
 from meceng.pipeline.services import SharedServices
 from meceng.pipeline.store import ReferenceStore
 from meceng.progress import Advance, live_display_enabled
-from meceng.sweep import GridPoint
+from meceng.sweeps.spec import GridPoint
 from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
