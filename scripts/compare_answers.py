@@ -1,6 +1,6 @@
 """The ``compare`` tool's answers, printed as a model reads them, and what a call costs.
 
-For the rigid double pendulum (seed 0, the README's ``simulate`` example): its ground truth against
+For the rigid double pendulum (seed 0, docs/agent.md's ``simulate`` example): its ground truth against
 the same system with the links created in the other order (``tasks/alternatives.py``: the two
 agree), and against a copy-paste fault (the second link's inertia made with the first link's
 length: they part). Each call is timed (wall seconds, cold interpreters: no warm pool); a parting

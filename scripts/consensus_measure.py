@@ -54,7 +54,7 @@ async def one_row(out: Path, label: str, p: float, models: list[str], samples: i
 
 
 async def measure(out: Path, samples: int, variations: int, seed: int, across: bool) -> list[dict[str, Any]]:
-    """The six rows of the README's table; ``across``: instead, one model that repeats one fault
+    """The six rows of docs/consensus.md's table; ``across``: instead, one model that repeats one fault
     against three that each repeat a fault of their own (``scripted-same:p=P:d=N``, N = 0, 1, 2)."""
     if across:
         return [await one_row(out, label, p, models, samples, variations, seed) for p in PS[:2]

@@ -41,7 +41,7 @@ class BehaviourTolerance:
     horizon: float | None = None  # compare up to this fraction of the simulated time (None: all of it)
 
 
-#: Task models whose ground truth is itself sensitive (see README, "Behaviour"): the fraction of
+#: Task models whose ground truth is itself sensitive (see docs/behaviour.md): the fraction of
 #: the simulated time compared. Measured with scripts/behaviour_sensitivity.py.
 BEHAVIOUR_HORIZONS: dict[str, float] = {
     # upright on two in-line wheels, an unstable equilibrium: the same scooter with its wheels' axes

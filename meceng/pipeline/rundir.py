@@ -1,7 +1,7 @@
 """The run folder: journal.jsonl as tasks finish, programs/, parts/, settings.json and run.json.
 
 Everything a run writes goes through here, so the folder's layout is described in one place
-(README "A run writes ...") and read back by ``--resume``, ``rescore``, ``report`` and ``view``.
+(docs/running.md, "A run's folder") and read back by ``--resume``, ``rescore``, ``report`` and ``view``.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ reference point away from the centre of mass, an equivalent joint or constraint,
 permuted with the rotation that undoes it, a constant load given as a user function. They move
 exactly as the ground truth does (up to round-off and time-stepping), so the behaviour verdict
 (``eval/behaviour.py``) must pass every one; which of them the paper's verdict fails is a finding
-about the paper's grader (README, "Behaviour"). Used by the tests and by
+about the paper's grader (docs/behaviour.md). Used by the tests and by
 ``scripts/behaviour_agreement.py``.
 """
 
