@@ -16,7 +16,7 @@ from meceng.llm.types import BACKENDS, DEFAULT_HOSTS, LLMSettings, backend_for
 if TYPE_CHECKING:
     from meceng.pipeline import RunSettings
 
-LEVELS = ("1", "2", "3a", "3b")
+LEVELS = ("1", "2", "3a", "3b", "4")
 #: --agent consensus's sampling temperature when none is given (its samples must differ to vote)
 CONSENSUS_TEMPERATURE = 0.7
 

@@ -110,6 +110,7 @@ class TaskInstance:
     parts: tuple[tuple[str, TaskInstance], ...] = ()  # an assembly's (slot, part instance)
     draft: Any = None  # a repair task's Draft (tasks.drafts): the program with a seeded fault
     texts: str = "paper"  # which description: the paper's, or "open" (an engineer's words)
+    design: Any = None  # a level-4 instance's DesignTask (tasks.design_base): variables, spec, target
 
     @property
     def key(self) -> str:
@@ -132,6 +133,7 @@ class TaskInstance:
             **({"part": self.part.to_json()} if self.part is not None else {}),
             **({"origin": self.origin} if self.origin else {}),
             **({"parts": {slot: part.key for slot, part in self.parts}} if self.parts else {}),
+            **({"design": self.design.to_json()} if self.design is not None else {}),
         }
 
 

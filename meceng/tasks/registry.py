@@ -1,5 +1,5 @@
 """Finds the task models: every module of ``meceng.tasks`` (rigid, levels 1-2) and of its
-``parts`` (3a) and ``assemblies`` (3b) subpackages that defines ``TASK``."""
+``parts`` (3a), ``assemblies`` (3b) and ``design`` (4) subpackages that defines ``TASK``."""
 
 from __future__ import annotations
 
@@ -11,16 +11,19 @@ from dataclasses import dataclass
 
 from meceng.tasks.assembly_base import AssemblyModel
 from meceng.tasks.base import TEXTS, TaskInstance, TaskModel
+from meceng.tasks.design_base import DesignModel
 from meceng.tasks.part_base import PartModel
 
-_NOT_TASKS = {"base", "registry", "part_base", "assembly_base"}
-_PACKAGES = ("meceng.tasks", "meceng.tasks.parts", "meceng.tasks.assemblies")
+_NOT_TASKS = {"base", "registry", "part_base", "assembly_base", "design_base", "design_sim", "design_measures",
+              "design_check"}
+_PACKAGES = ("meceng.tasks", "meceng.tasks.parts", "meceng.tasks.assemblies", "meceng.tasks.design")
 
-#: The levels whose task models have an open text (issue 36): the rigid ones.
-OPEN_TEXT_LEVELS = ("1", "2")
+#: The levels whose task models have an open text (issue 36): the rigid ones, and the design tasks,
+#: whose one text is an engineer's.
+OPEN_TEXT_LEVELS = ("1", "2", "4")
 
 #: Any kind of task model: they share id, name, level, slug and ``instance(seed)``.
-AnyModel = TaskModel | PartModel | AssemblyModel
+AnyModel = TaskModel | PartModel | AssemblyModel | DesignModel
 
 
 class UnknownTaskError(KeyError, ValueError):
@@ -98,13 +101,14 @@ class TaskRegistry:
                   texts: str = "paper") -> list[TaskInstance]:
         """Variation k of every model uses seed ``seed + k``; order is model-major. ``texts``: the
         task text every instance gets (``"open"``: only level-1/2 models have one, see ``with_texts``)."""
-        models = [m for m in models if texts == "paper" or isinstance(m, TaskModel)]
+        models = [m for m in models if texts == "paper" or isinstance(m, TaskModel | DesignModel)]
         return [self.instance_of(m, seed + k, texts) for m in models for k in range(variations)]
 
     @staticmethod
     def instance_of(model: AnyModel, seed: int, texts: str = "paper") -> TaskInstance:
-        """One instance with the ``texts`` task text; parts and assemblies have the paper's alone."""
-        if texts == "paper":
+        """One instance with the ``texts`` task text; parts and assemblies have the paper's alone, a
+        design task its engineer's text alone (whatever ``texts`` asks)."""
+        if texts == "paper" or isinstance(model, DesignModel):
             return model.instance(seed)
         if not isinstance(model, TaskModel):
             raise ValueError(f"task model {model.slug!r} (level {model.level}) has no {texts} text")
@@ -127,7 +131,7 @@ class TaskRegistry:
             raise ValueError(f"{which} no open texts (parts and assemblies; only levels "
                              f"{', '.join(OPEN_TEXT_LEVELS)} do): run {'it' if len(without_levels) == 1 else 'them'} "
                              "with --texts paper")
-        kept = [m for m in models if isinstance(m, TaskModel) and m.open_description.strip()]
+        kept = [m for m in models if isinstance(m, TaskModel | DesignModel) and m.open_description.strip()]
         missing = [m.slug for m in models if m not in kept]
         wanted = {str(k) for k in only}
         named = [m.slug for m in models if m.slug in missing and (m.slug in wanted or str(m.id) in wanted)]
@@ -151,7 +155,7 @@ def discover() -> TaskRegistry:
                 continue
             module = importlib.import_module(f"{package_name}.{info.name}")
             task = getattr(module, "TASK", None)
-            if isinstance(task, TaskModel | PartModel | AssemblyModel):
+            if isinstance(task, TaskModel | PartModel | AssemblyModel | DesignModel):
                 models.append(task)
     return TaskRegistry(tuple(sorted(models, key=lambda m: m.id)))
 
