@@ -12,6 +12,7 @@ The figures are what ``meceng tasks show`` and docs/design.md show; each takes ~
 from __future__ import annotations
 
 import argparse
+import fcntl
 import json
 import statistics
 import time
@@ -31,7 +32,7 @@ def main() -> int:
     args = parser.parse_args()
     registry = default_registry()
     models = [registry.get(s) for s in args.slugs] if args.slugs else registry.select(levels=["4"])
-    figures = json.loads(FIGURES.read_text()) if FIGURES.exists() else {}
+    figures: dict = {}
     for model in models:
         t0 = time.perf_counter()
         bands, estimates = [], []
@@ -55,7 +56,11 @@ def main() -> int:
         }
         print(f"== {model.slug}: {json.dumps(figures[model.slug])} ({time.perf_counter() - t0:.0f} s)", flush=True)
     if args.write:
-        FIGURES.write_text(json.dumps(dict(sorted(figures.items())), indent=1) + "\n")
+        with open(FIGURES.with_suffix(".lock"), "w") as lock:  # several scripts may write at once
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            kept = json.loads(FIGURES.read_text()) if FIGURES.exists() else {}
+            kept.update(figures)
+            FIGURES.write_text(json.dumps(dict(sorted(kept.items())), indent=1) + "\n")
         print(f"written: {FIGURES}")
     return 0
 
