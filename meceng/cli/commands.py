@@ -53,6 +53,10 @@ def _instance(args: argparse.Namespace) -> Any:
 def cmd_tasks_show(args: argparse.Namespace) -> int:
     instance = _instance(args)
     data = instance.to_json()
+    if instance.design is not None:  # how hard it is: the band of passing designs, the estimate's verdict
+        from meceng.tasks.design_check import hardness
+
+        data["design"].update(hardness(instance))
     if args.json:
         print(json.dumps(data, indent=1))
         return 0
@@ -61,7 +65,23 @@ def cmd_tasks_show(args: argparse.Namespace) -> int:
     print(instance.description + "\n")
     print("parameters: " + ", ".join(f"{k} = {v}" for k, v in instance.params.items()))
     print("required components: " + ", ".join(instance.required_components))
+    if instance.design is not None:
+        _print_design(data["design"])
     return 0
+
+
+def _print_design(design: dict[str, Any]) -> None:
+    spec, band, estimate = design["spec"], design.get("band"), design["estimate"]
+    print(f"design: {', '.join(f'{k} in {v}' for k, v in design['variables'].items())} on the system "
+          f"{design['system']}; spec ({spec['kind']}): {spec['quantity']} = {spec['target']:g} {spec['unit']} "
+          f"± {spec['tolerance']:.3g}")
+    if band:
+        print(f"passing band (measured over {band['seeds']} instances): {band['band_percent']['min']}-"
+              f"{band['band_percent']['max']} % of the range (median {band['band_percent']['median']} %); "
+              f"the closed-form estimate passed {band['estimate']['passed']} of {band['estimate']['of']}")
+    verdict = "passes" if estimate["passed"] else "fails"
+    print(f"closed-form estimate ({estimate['method']}): {estimate['design']} -> {estimate['value']:.5g} "
+          f"{spec['unit']}, {estimate['error_in_tolerances']:g} tolerances off: {verdict}")
 
 
 def cmd_tasks_reference(args: argparse.Namespace) -> int:
@@ -88,7 +108,7 @@ def cmd_tasks_prompt(args: argparse.Namespace) -> int:
 
 
 def cmd_evaluate(args: argparse.Namespace) -> int:
-    from meceng.pipeline import evaluate_program
+    from meceng.pipeline.rescore import evaluate_graded
     from meceng.tools.execution import ExecutionLimits
 
     instance = _instance(args)
@@ -98,9 +118,10 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
         print(f"error: cannot read {args.code}: {exc.strerror}", file=sys.stderr)
         return 2
     selected = tuple(x.strip() for x in args.components.split(",") if x.strip()) if args.components else None
-    verdict, candidate, _ = asyncio.run(
-        evaluate_program(instance, code, selected, limits=ExecutionLimits(timeout_s=args.timeout)))
+    graded = asyncio.run(evaluate_graded(instance, code, selected, limits=ExecutionLimits(timeout_s=args.timeout)))
+    verdict, candidate = graded.verdict, graded.candidate
     data = {"task": instance.slug, "seed": instance.seed, "texts": instance.texts, **verdict.to_json(),
+            **({"design": graded.facts["design"]} if "design" in graded.facts else {}),
             "execution": candidate.summary()}
     if args.json:
         print(json.dumps(data, indent=1, default=str))
@@ -116,6 +137,8 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
             print("error categories: " + ", ".join(verdict.error_categories))
         if verdict.infrastructure_error:
             print(f"infrastructure error: {verdict.infrastructure_error}")
+        if "design" in graded.facts:
+            print(f"design: {graded.facts['design']['detail']}")
         if verdict.behaviour is not None and verdict.graded_by == "paper":
             # beside the paper's verdict; the exit status stays the paper's (an open text's is behaviour)
             mark = {True: "pass", False: "FAIL", None: " -- "}[verdict.behaviour["passed"]]

@@ -111,8 +111,10 @@ class Evaluator:
             _cancel(self._remeshed.pop(key))
 
     def prefetch(self, instance: TaskInstance) -> None:
-        """Start the reference execution now, while the LLM is still busy with this task."""
-        if instance.kind != "assembly":  # an assembly's reference needs the parts the LLM makes first
+        """Start the reference execution now, while the LLM is still busy with this task (a design
+        task's reference is built with the answer's values: nothing to start before it)."""
+        # an assembly's reference needs the parts the LLM makes first
+        if instance.kind != "assembly" and instance.design is None:
             self.references.start(instance)
             if instance.kind == "rigid":
                 self.refined.start(instance)
@@ -137,12 +139,12 @@ class Evaluator:
         return await execute(program, "", limits, check=check, pool=self.pool, slots=self.slots)
 
     async def _run_refined(self, instance: TaskInstance) -> Execution:
-        return await self._ground_truth(refined(instance), instance.reference_program)
+        return await self.ground_truth(refined(instance), instance.reference_program)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
-        return await self._ground_truth(instance, instance.reference_program)
+        return await self.ground_truth(instance, instance.reference_program)
 
-    async def _ground_truth(self, instance: TaskInstance, program: str) -> Execution:
+    async def ground_truth(self, instance: TaskInstance, program: str) -> Execution:
         """A ground-truth execution: from the reference store when there is one, else run here."""
 
         async def run() -> Execution:
@@ -164,7 +166,7 @@ class Evaluator:
         key = (instance.key, maxh)
         if key not in self._remeshed:
             program = re.sub(r"GenerateMesh\(maxh=[^)]*\)", f"GenerateMesh(maxh={maxh!r})", instance.reference_program)
-            self._remeshed[key] = asyncio.ensure_future(self._ground_truth(instance, program))
+            self._remeshed[key] = asyncio.ensure_future(self.ground_truth(instance, program))
         return await asyncio.shield(self._remeshed[key])
 
     async def evaluate(

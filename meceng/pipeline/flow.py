@@ -24,7 +24,7 @@ from meceng.tasks.base import TaskInstance
 from .consensus import consensus_flow
 from .evaluation import Evaluator
 from .grading import offload
-from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
+from .kinds import AssemblyKind, PartKind, TaskKind, single_kind
 from .records import agent_block, agent_generation, lost_record, not_started_record, task_record
 from .rundir import RunWriter, save_programs
 from .settings import RunSettings
@@ -150,5 +150,5 @@ async def run_instance(instance: TaskInstance, ctx: FlowContext) -> list[dict[st
     """The records one task instance produces (an assembly: its parts' and its own)."""
     if instance.kind == "assembly":
         return await run_assembly(instance, ctx)
-    kind = part_kind(instance, ctx) if instance.kind == "part" else RigidKind(ctx.evaluator)
-    return [await run_flow(instance, kind, ctx)]
+    keep_at = ctx.writer.part_path(instance) if instance.kind == "part" else None
+    return [await run_flow(instance, single_kind(instance, ctx.evaluator, keep_at), ctx)]

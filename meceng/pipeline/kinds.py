@@ -9,26 +9,18 @@ program files and the record itself are the flow's (``flow.py``), written once f
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol
 
 from meceng.catalog.component import Catalog
-from meceng.eval.chain import StageResult, Verdict
+from meceng.eval.chain import StageResult
 from meceng.tasks.base import TaskInstance
-from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.execution import ExecutionLimits
 
+from .design import DesignKind
 from .evaluation import Evaluator
-
-
-@dataclass(frozen=True)
-class Graded:
-    """One program graded: the verdict, both executions, and facts the kind keeps for its record."""
-
-    verdict: Verdict
-    candidate: Execution
-    reference: Execution
-    facts: dict[str, Any] = field(default_factory=dict)
+from .graded import Graded
 
 
 class TaskKind(Protocol):
@@ -135,3 +127,12 @@ class AssemblyKind:
         timing["total_s"] = round(timing["total_s"] + self.part_timing.get("parts_wall_s", 0.0), 4)
         timing.update({k: round(v, 4) for k, v in self.part_timing.items()})
         record["parts"] = self.part_keys
+
+
+def single_kind(instance: TaskInstance, evaluator: Evaluator, keep_at: Path | None = None) -> TaskKind:
+    """The scorer of a task that is not an assembly: a part, a design task or a rigid one."""
+    if instance.kind == "part":
+        return PartKind(evaluator, keep_at=keep_at)
+    if instance.design is not None:
+        return DesignKind(evaluator)
+    return RigidKind(evaluator)

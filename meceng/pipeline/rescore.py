@@ -22,9 +22,10 @@ from meceng.tools.executor import child_env
 from meceng.tools.warm import WarmPool
 
 from .evaluation import Evaluator
+from .graded import Graded
 from .grading import grading_pool as make_grading_pool
 from .grading import offload
-from .kinds import AssemblyKind, PartKind, RigidKind, TaskKind
+from .kinds import AssemblyKind, TaskKind, single_kind
 from .preflight import ensure_stack
 from .rundir import record_key, write_atomic
 from .store import ReferenceStore
@@ -39,14 +40,20 @@ async def evaluate_program(
 ) -> tuple[Verdict, Execution, Execution]:
     """Grade one program against the task instance, as if an LLM had written it. An assembly's
     parts are made from their ground truths first (outside a run no LLM made them)."""
+    graded = await evaluate_graded(instance, code, selected, limits)
+    return graded.verdict, graded.candidate, graded.reference
+
+
+async def evaluate_graded(instance: TaskInstance, code: str, selected: tuple[str, ...] | None = None,
+                          limits: ExecutionLimits | None = None) -> Graded:
+    """``evaluate_program`` with what the task kind keeps beside the verdict (a design's outcome)."""
     evaluator = Evaluator(2, limits or ExecutionLimits(), Tolerances())
     if instance.kind == "assembly":
         with tempfile.TemporaryDirectory(prefix="meceng-parts-") as folder:
             files = await evaluator.ground_truth_parts(instance, Path(folder))
-            return await evaluator.evaluate(instance, code, selected, None, files=files)
-    kind: TaskKind = PartKind(evaluator) if instance.kind == "part" else RigidKind(evaluator)
-    graded = await kind.grade(instance, code, selected, None, keep=False)  # no components given: not applicable
-    return graded.verdict, graded.candidate, graded.reference
+            return Graded(*await evaluator.evaluate(instance, code, selected, None, files=files))
+    # no components given: not applicable
+    return await single_kind(instance, evaluator).grade(instance, code, selected, None, keep=False)
 
 
 async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
@@ -84,13 +91,11 @@ async def rescore(run_dir: Path, registry: TaskRegistry | None = None,
         return registry.instance_of(registry.get(record["slug"]), record["seed"], record.get("texts", "paper"))
 
     def kind_of(instance: TaskInstance, record: dict[str, Any]) -> TaskKind:
-        if instance.kind == "part":
-            return PartKind(evaluator)
         if instance.kind == "assembly":
             files = {f"{slot}.npz": run_dir / saved_parts[part.key]["files"]["part"] for slot, part in instance.parts}
             before = tuple(StageResult(**s) for s in record["stages"][:2])  # parts overall, MBS started
             return AssemblyKind(evaluator, files, before, record.get("parts", {}), {})
-        return RigidKind(evaluator)
+        return single_kind(instance, evaluator)
 
     async def one(record: dict[str, Any]) -> dict[str, Any]:
         if record.get("first_failure") == "infrastructure" or "generation" not in record:

@@ -114,3 +114,21 @@ def check_estimate(instance: TaskInstance) -> EstimateCheck:
     value = measured(task, design)
     error = abs(value - task.target) / task.tolerance if np.isfinite(value) else float("inf")
     return EstimateCheck(design, value, bool(error <= 1.0), float(error))
+
+
+def model_figures(slug: str) -> dict[str, Any] | None:
+    """The figures ``scripts/design_figures.py --write`` measured for a design task model (None: not yet)."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent / "design" / "figures.json"
+    return json.loads(path.read_text()).get(slug) if path.exists() else None
+
+
+def hardness(instance: TaskInstance) -> dict[str, Any]:
+    """What ``meceng tasks show`` adds for a design instance: the model's measured band and estimate
+    figures, and the estimate of this instance with the verdict it gets."""
+    task: DesignTask = instance.design
+    check = check_estimate(instance)
+    return {"band": model_figures(instance.slug),
+            "estimate": {"method": task.model.estimate_text, **check.to_json()}}
