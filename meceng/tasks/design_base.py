@@ -14,6 +14,7 @@ at top level as a literal ``DESIGN = {"name": value, ...}`` and runs exactly one
 
 from __future__ import annotations
 
+import importlib
 import textwrap
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -21,7 +22,16 @@ from typing import Any
 
 import numpy as np
 
-from meceng.tasks.base import PREAMBLE, Param, SimSettings, TaskInstance, TaskModel, program_header, round_significant
+from meceng.tasks.base import (
+    PREAMBLE,
+    Param,
+    SimSettings,
+    TaskInstance,
+    TaskModel,
+    program_header,
+    round_significant,
+    slugify,
+)
 
 #: The quantity kinds a specification can be on (the issue's five, kept as words in the records).
 QUANTITY_KINDS = ("event_time", "position", "extreme", "period", "settling_time")
@@ -136,9 +146,12 @@ class DesignModel:
 
     @property
     def slug(self) -> str:
-        from meceng.tasks.base import slugify
-
         return slugify(self.name)
+
+    def __reduce__(self) -> tuple[Any, tuple[str]]:
+        """Pickled by name (instances travel to the grading processes): the model is its module's
+        ``TASK``, and a module of ``meceng.tasks.design`` is named after its model's slug."""
+        return _design_model, (self.slug,)
 
     @property
     def components(self) -> tuple[str, ...]:
@@ -221,3 +234,7 @@ class DesignModel:
             reference_program=self.program(values, gold, f"reference program, seed {seed}", description),
             texts="open", design=design,
         )
+
+
+def _design_model(slug: str) -> DesignModel:
+    return importlib.import_module(f"meceng.tasks.design.{slug}").TASK
