@@ -15,6 +15,8 @@ from typing import Any
 
 from meceng.eval.calibration import consensus_sections
 from meceng.eval.categories import CATEGORIES
+from meceng.eval.design_tables import HEADERS as DESIGN_HEADERS
+from meceng.eval.design_tables import design_cells, design_rows
 from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.tables import (
     FLEXIBLE_COLUMNS,
@@ -229,6 +231,12 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
                               "–" if c["points"] is None else f"{c['points']:+.1f}"] for c in contribution])
             sections.append(("Repair benchmark: what the tools are worth", md, ht, None))
 
+    design = design_rows(runs)
+    if design:
+        md, ht = _table(DESIGN_HEADERS, [design_cells(r) for r in design])
+        sections.append(("Design tasks, level 4: first try and final, the spec's margins (1 on target, 0 at the "
+                         "tolerance's edge)", md, ht, None))
+
     for title, headers, rows in consensus_sections(runs):
         sections.append((title, *_table(headers, rows), None))
 
@@ -262,6 +270,8 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
         "tokens": tokens,
         "texts": [{**{k: v for k, v in r.items() if not isinstance(v, Rate)},
                    **{k: r[k].to_json() for k in ("paper", "paper_behaviour", "open")}} for r in texts],
+        "design": [{**{k: v for k, v in r.items() if not isinstance(v, Rate)}, "first": r["first"].to_json(),
+                    "final": r["final"].to_json()} for r in design],
         "difficulty": [{**{k: v for k, v in r.items() if k != "overall"}, "overall": r["overall"].to_json()}
                        for r in hard],
     }
