@@ -18,7 +18,10 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
                         "terms, rotation accumulated about its spin axis) and velocities; "
                         "every connector with the bodies it joins, where, its free and locked directions, its "
                         "parameters; every load with its vector; then the bodies' states at a few times and the "
-                        "range of every coordinate over the run. Long lists are cut and say how to ask for more."),
+                        "range of every coordinate over the run; then the program's own sensors (mbs.AddSensor), "
+                        "stored at every step and shown at sensor_samples times of sensor_window with each "
+                        "column's largest and smallest value: use them to measure what the task asks of the "
+                        "motion. Long lists are cut and say how to ask for more."),
         "parameters": {"type": "object", "properties": {
             "code": _CODE,
             "bodies": {"type": "array", "items": {"type": "integer"},
@@ -27,7 +30,12 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
                       "description": "times (s) at which to report the states (default: half the end time "
                                      "and the end time; at most eight)"},
             "quantities": {"type": "array", "items": {"type": "string", "enum": list(QUANTITIES)},
-                           "description": "which states to report (default: all)"}},
+                           "description": "which states to report (default: all)"},
+            "sensor_window": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2,
+                              "description": "[t0, t1] in s: the time window of the sensor tables (default: the "
+                                             "whole run)"},
+            "sensor_samples": {"type": "integer", "minimum": 2, "maximum": 200,
+                               "description": "how many evenly spaced times each sensor table shows (default 41)"}},
             "required": ["code"]},
     },
     {

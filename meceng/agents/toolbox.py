@@ -25,6 +25,7 @@ from meceng.catalog.component import Catalog
 from meceng.inspect import snapshot as pictures
 from meceng.inspect.answer import render
 from meceng.inspect.bodies import QUANTITIES, Ask
+from meceng.inspect.sensors import sensor_words
 from meceng.inspect.view import build_view
 from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
@@ -34,6 +35,8 @@ from meceng.tools.recording import REFINE, run_recorded
 from meceng.tools.warm import WarmPool
 
 MAX_TEXT = 1500
+#: The most rows of a sensor the child sends back (a table shows at most 200, interpolated).
+SENSOR_ROWS = 20000
 
 
 @dataclass(frozen=True)
@@ -77,7 +80,9 @@ class Toolbox:
                 return ToolResult(json.dumps(await self.mesh_part(str(arguments["code"]))))
             if name == "simulate":
                 return ToolResult(await self.simulate(str(arguments["code"]), _ask(arguments),
-                                                      _times(arguments.get("times"))))
+                                                      _times(arguments.get("times")),
+                                                      window=_window(arguments.get("sensor_window")),
+                                                      samples=int(arguments.get("sensor_samples") or 41)))
             if name == "snapshot":
                 return await self.snapshot(str(arguments["code"]), arguments.get("time"))
             if name == "compare":
@@ -133,20 +138,26 @@ class Toolbox:
                 eigenfrequencies_are=FREQUENCIES_NOTE, nodes=part["nodes"])
         return _rounded(report)
 
-    async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None
-                   ) -> Execution:
-        # only the time span of the description; none of the ground truth's solver extras
+    async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None,
+                   sensors: bool = False) -> Execution:
+        # only the time span of the description; none of the ground truth's solver extras, except for a
+        # design task, whose text names them (they change the values its spec is on)
         sim = self.instance.sim
         if sim is None:
             raise LookupError("no simulation for a part")
-        block = SimSettings(sim.end_time, sim.steps).block()
+        block = sim.block() if self.instance.design is not None else SimSettings(sim.end_time, sim.steps).block()
+        solve = "mbs.SolveDynamic(simulationSettings)"
+        if sensors:  # every step stored (sensors only observe: the motion is the same)
+            block = block.replace(solve, f"simulationSettings.solution.sensors.writePeriod = "
+                                         f"{sim.end_time / sim.steps!r}\n{solve}")
         if energy:
-            solve = "mbs.SolveDynamic(simulationSettings)"
             block = ENERGY_CODE + block.replace(solve, (
                 "_e0 = _meceng_energy(mbs)\n" + solve + "\n"
                 f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
         limits = (self.limits if inspect_times is None
                   else replace(self.limits, inspect_times=inspect_times, inspect_loads=True))
+        if sensors:
+            limits = replace(limits, sensor_rows=SENSOR_ROWS)
         return await execute(code, block, limits, pool=self.pool, files=self.files)
 
     async def _recorded(self, code: str, finer: bool = False) -> Execution:
@@ -164,13 +175,15 @@ class Toolbox:
     def _end_time(self) -> float:
         return self.instance.sim.end_time if self.instance.sim is not None else 0.0
 
-    async def simulate(self, code: str, ask: Ask | None = None, times: tuple[float, ...] = ()) -> str:
+    async def simulate(self, code: str, ask: Ask | None = None, times: tuple[float, ...] = (),
+                       window: tuple[float, float] | None = None, samples: int = 41) -> str:
         end = self._end_time()
-        run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
+        run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end), sensors=True)
         if run.items is None:
             return json.dumps({"stage": run.stage, "error": _trim(run.error)})
         view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
-        return render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
+        text = render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
+        return text + "\n\n" + sensor_words(run.sensors, window, samples, end)
 
     async def snapshot(self, code: str, time: Any = None) -> ToolResult:
         if self.instance.kind == "part":
@@ -281,6 +294,15 @@ def _times(values: Any) -> tuple[float, ...]:
     if not isinstance(values, list | tuple):
         values = [values]
     return tuple(float(v) for v in values)
+
+
+def _window(values: Any) -> tuple[float, float] | None:
+    if values is None:
+        return None
+    if not isinstance(values, list | tuple) or len(values) != 2:
+        raise ValueError("sensor_window is [t0, t1]")
+    lo, hi = sorted(float(v) for v in values)
+    return lo, hi
 
 
 def _clip(times: tuple[float, ...], end: float) -> tuple[float, ...]:

@@ -31,6 +31,9 @@ class ExecutionLimits:
     inspect_loads: bool = False
     # the behaviour comparison: every body's motion on a grid of (end time, samples) (None: not recorded)
     motion_grid: tuple[float, int] | None = None
+    # the agent's simulate: the program's own sensors stored over the run, at most this many rows each
+    # (None: not recorded; the sensors then only observe, as in every graded run)
+    sensor_rows: int | None = None
 
 
 @dataclass(frozen=True)
@@ -65,6 +68,8 @@ class Execution:
     # the bodies' motion (ExecutionLimits.motion_grid): "bodies" (index, type, mass, inertia, com),
     # "t" (n,) and "states" (n, bodies, 18: centre of mass, velocity, angular velocity, rotation)
     motion: dict[str, Any] | None = None
+    # the program's sensors (ExecutionLimits.sensor_rows): index, name, what it reads, rows [t, values...]
+    sensors: list[dict[str, Any]] | None = None
 
     @property
     def finished_assemble(self) -> bool:

@@ -169,7 +169,8 @@ def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLim
                                "inspect_times": None if limits.inspect_times is None else list(limits.inspect_times),
                                "inspect_loads": limits.inspect_loads,
                                "motion": None if limits.motion_grid is None else
-                               {"end": limits.motion_grid[0], "samples": limits.motion_grid[1]}}))
+                               {"end": limits.motion_grid[0], "samples": limits.motion_grid[1]},
+                               "sensor_rows": limits.sensor_rows}))
     (scratch / "program.py").write_text(program)
     return job, token
 
@@ -279,6 +280,7 @@ def _collect(
         warnings=tuple(result.get("warnings", ())),
         solve_time=result.get("solve_time"),
         inspection=result.get("inspection"),
+        sensors=result.get("sensors"),
         motion=motion if isinstance(motion, dict) and "states" in motion else None,
         **common,
     )

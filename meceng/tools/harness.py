@@ -31,6 +31,7 @@ class Harness:
         self.rows: list[tuple[float, Any]] = []
         self.inspector: Any = None  # an InspectionRecorder when the job asks for the model inspector
         self.motion: Any = None  # a MotionRecorder when the job asks for the bodies' motion (behaviour)
+        self.sensor_rows: int | None = None  # keep the program's sensors (the agent's simulate)
         self.mark("started")
 
     def mark(self, stage: str) -> None:
@@ -73,7 +74,7 @@ class Harness:
             "GetODE2CoordinatesTotal", "NumberOfNodes", "NumberOfObjects", "NumberOfMarkers", "NumberOfLoads",
             "NumberOfSensors")}
         self.api.update({name: getattr(main_system, name) for name in (
-            "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter",
+            "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter", "GetSensorStoredData",
             "ComputeSystemDegreeOfFreedom", "GetObjectOutputBody", "GetNodeOutput", "GetMarkerOutput",
             "GetNodeODE2Index")})
         # the inspector's enums, before the program could replace them with objects of its own
@@ -134,6 +135,8 @@ class Harness:
         # none are written (the harness records the coordinates itself)
         for index in range(self.api["NumberOfSensors"](mbs.systemData)):
             self.api["SetSensorParameter"](mbs, index, "writeToFile", False)
+            if self.sensor_rows:  # the agent reads the program's sensors back: stored in memory
+                self.api["SetSensorParameter"](mbs, index, "storeInternal", True)
         self._original_set_post(mbs, record)
         namespace["mbs"] = mbs
         namespace["exu"] = exudyn
@@ -143,6 +146,34 @@ class Harness:
 
 
 # ----------------------------------------------------------------------------- capture
+
+
+#: A sensor's fields that say what it reads (the rest is bookkeeping or file settings).
+SENSOR_FIELDS = ("name", "sensorType", "outputVariableType", "bodyNumber", "nodeNumber", "markerNumber",
+                 "objectNumber", "loadNumber", "localPosition")
+
+
+def capture_sensors(mbs: Any, api: dict[str, Any], rows: int) -> list[dict[str, Any]]:
+    """Every sensor of the program: what it reads and its stored values, at most ``rows`` rows
+    (evenly picked, the first and last kept), each [t, value...]."""
+    sensors = []
+    for index in range(api["NumberOfSensors"](mbs.systemData)):
+        fields = api["GetSensor"](mbs, index)
+        entry: dict[str, Any] = {"index": index, **{k: to_jsonable(fields[k]) for k in SENSOR_FIELDS if k in fields}}
+        for key in ("sensorType", "outputVariableType"):  # enums: their names, not their numbers
+            if key in fields:
+                entry[key] = str(fields[key]).rpartition(".")[2]
+        try:
+            data = np.atleast_2d(np.asarray(api["GetSensorStoredData"](mbs, index), dtype=float))
+        except Exception as exc:  # a sensor Exudyn stores nothing for (e.g. no storeInternal support)
+            entry["error"] = str(exc)
+            sensors.append(entry)
+            continue
+        if data.size and len(data) > rows:
+            data = data[np.unique(np.linspace(0, len(data) - 1, rows).round().astype(int))]
+        entry["rows"] = data.tolist() if data.size else []
+        sensors.append(entry)
+    return sensors
 
 
 def to_jsonable(value: Any) -> Any:

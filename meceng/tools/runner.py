@@ -31,7 +31,7 @@ import numpy as np
 
 from meceng.tools import guard
 from meceng.tools.errors import PROGRAM_NAME, describe_exception
-from meceng.tools.harness import HandOver, Harness, capture_items, system_summary
+from meceng.tools.harness import HandOver, Harness, capture_items, capture_sensors, system_summary
 
 # ----------------------------------------------------------------------------- main
 
@@ -96,6 +96,7 @@ def run(job_path: Path) -> int:
         harness.inspector = start_inspection(harness, job["inspect_times"], result, bool(job.get("inspect_loads")))
     if job.get("motion") is not None:
         harness.motion = start_motion(harness, job["motion"], result)
+    harness.sensor_rows = job.get("sensor_rows")
     t_solve = time.perf_counter()
     try:
         harness.guard(True)  # the program's user functions run inside the solver
@@ -105,6 +106,11 @@ def run(job_path: Path) -> int:
     finally:
         harness.guard(False)
     result["solve_time"] = time.perf_counter() - t_solve
+    if harness.sensor_rows:
+        try:
+            result["sensors"] = capture_sensors(harness.mbs, harness.api, int(harness.sensor_rows))
+        except Exception as exc:
+            result["warnings"].append(f"sensors unavailable: {exc}")
     if harness.inspector is not None:
         result["inspection"] = harness.inspector.result()
     result["stage"] = harness.stage
