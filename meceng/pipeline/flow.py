@@ -81,9 +81,10 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
         return lost_record(instance, generation.infrastructure_error, _times(t0, t_llm),
                            selection=selection, generation=generation)
     graded = await kind.grade(instance, generation.code, selection.names, generation.error, keep=True)
-    first = graded.verdict
+    first, first_facts = graded.verdict, graded.facts
     if agent is not None and agent.first_code != agent.final_code:
-        first = (await kind.grade(instance, agent.first_code, selection.names, agent.error, keep=False)).verdict
+        first_graded = await kind.grade(instance, agent.first_code, selection.names, agent.error, keep=False)
+        first, first_facts = first_graded.verdict, first_graded.facts
     files = await offload(evaluator.grading, save_programs, ctx.writer.run_dir, instance, generation.code)
     record = task_record(instance, selection, generation, graded.verdict, graded.candidate, graded.reference,
                          _times(t0, t_llm, time.perf_counter()), files)
@@ -95,6 +96,8 @@ async def _flow(instance: TaskInstance, kind: TaskKind, ctx: FlowContext) -> dic
         record["files"]["traces"] = traces
     if agent is not None:
         record["agent"] = agent_block(agent, first)
+        if "design" in first_facts:  # a design task: what the first program's values gave
+            record["agent"]["first_design"] = first_facts["design"]
     if repair:
         record["repair"] = {**instance.draft.to_json(), "tools": settings.repair_tools,
                             "repaired": graded.verdict.overall}

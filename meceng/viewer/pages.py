@@ -17,6 +17,7 @@ from typing import Any
 from meceng.eval.parts import PartTolerances
 from meceng.tasks.drafts import without_header
 from meceng.viewer.consensus import consensus_section
+from meceng.viewer.design import design_section
 from meceng.viewer.diff import side_by_side
 
 #: record fields a section below shows; anything else lands in "Other fields"
@@ -24,7 +25,7 @@ SHOWN = {"id", "slug", "name", "level", "seed", "params", "description", "requir
          "overall", "first_failure", "error_categories", "differences", "solution_norm", "infrastructure_error",
          "selection", "generation", "execution", "reference_execution", "timing", "tokens", "files", "evaluator",
          "part", "parts", "agent", "traceback", "topology_causes", "repair",
-         "behaviour", "texts", "graded_by", "consensus"}
+         "behaviour", "texts", "graded_by", "consensus", "design"}
 
 
 #: what each kind of task text is, in the page's words (issue 36)
@@ -257,6 +258,8 @@ def task_page(record: dict[str, Any], *, run_label: str, root: str, program: str
     s += ["<h2>Description</h2>", f"<p class='desc'>{esc(record.get('description', ''))}</p>",
           _details("parameters", _json(record.get("params", {}))),
           "<h2 id='stages'>Stages</h2>", _stages(record)]
+    if record.get("design"):
+        s += ["<h2 id='design'>Design: the spec's quantity against its target</h2>", design_section(record)]
     if record.get("consensus"):  # what a consensus run adds, before the answer's own details
         s += ["<h2 id='consensus'>Consensus: the samples grouped by how they move</h2>",
               consensus_section(record["consensus"])]
