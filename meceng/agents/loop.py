@@ -44,6 +44,14 @@ description, repair it if needed, and then give the final program in a single ``
 without calling a tool.
 """
 
+#: A design task's addition: how to measure the requirement's quantity with the tools (never its verdict).
+DESIGN_AGENT_NOTE = """This is a design task: the tools never say whether a value meets the requirement, but
+`simulate` shows your program's own sensors, stored at every step (add them before mbs.Assemble(), e.g.
+mbs.AddSensor(SensorBody(bodyNumber=oBody, outputVariableType=exu.OutputVariableType.Position,
+storeInternal=True))), in a time window and at a resolution you choose (sensor_window, sensor_samples):
+measure the quantity the requirement is on, and change your values until it is met.
+"""
+
 
 @dataclass
 class AgentResult:
@@ -75,6 +83,8 @@ def agent_prompt(instance: TaskInstance, catalog: Catalog, names: tuple[str, ...
     """The agent's first message: the code prompt (or ``question``, a repair task's) with the note
     on its tools appended."""
     note = PART_AGENT_NOTE if instance.kind == "part" else AGENT_NOTE
+    if instance.design is not None:
+        note += DESIGN_AGENT_NOTE
     return (question or generation_prompt(instance, catalog, names, template)) + note
 
 
