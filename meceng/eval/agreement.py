@@ -78,7 +78,7 @@ def joint_scales(a: Scales, b: Scales) -> Scales:
         return min(finite) if finite else 1.0
 
     return Scales(smaller(a.length, b.length), smaller(a.speed, b.speed), smaller(a.duration, b.duration),
-                  smaller(a.travel, b.travel))
+                  smaller(a.travel, b.travel), smaller(a.turning, b.turning))
 
 
 def _head(bodies: list[BodyMotion], n: int) -> list[BodyMotion]:

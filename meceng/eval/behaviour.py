@@ -134,7 +134,7 @@ def _pair_errors(candidate: BodyMotion, truth: BodyMotion, n: int, scale: Scales
     size = max(truth.size, candidate.size)
     if truth.w is not None and size > 1e-3 * scale.length:
         omega = candidate.w[:n] if candidate.w is not None else np.zeros((n, 3))
-        out.append(("angular_velocity", np.linalg.norm(omega - truth.w[:n], axis=1), relative * scale.speed / size))
+        out.append(("angular_velocity", np.linalg.norm(omega - truth.w[:n], axis=1), relative * scale.turning / size))
         angles = _axis_angles(candidate, truth, n)
         if angles is not None:
             out.append(("axis", angles, min(relative * scale.length / size, 0.5)))

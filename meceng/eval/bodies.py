@@ -103,15 +103,26 @@ class Scales:
     """The ground truth's own sizes, which every tolerance is a fraction of."""
 
     length: float  # the system's size: the box around every centre of mass over the whole run, or the largest body
-    speed: float  # the range of velocities: centres of mass and the bodies' rim speeds (|w| times size)
+    # the range of the centres of mass' velocities (at least travel / duration): what a centre of mass's
+    # velocity is compared against. Not the rim speeds: a gyroscope's rim moves at 38 m/s while its
+    # centre of mass never passes 0.15 m/s: at the rim's scale its velocity had a quarter of its size as tolerance
+    speed: float
     duration: float
     # the motion's range: the farthest one centre of mass travels (the box around its path), at least
     # TRAVEL_FLOOR of the size (a truss deflects millimetres in metres; a disc spins in place)
     travel: float = 0.0
+    # the rotations' scale: the largest rim speed (|w| times the body's inertia radius), at least
+    # ``speed``; a body's angular velocity is compared at its inertia radius against it (0: ``speed``)
+    rim: float = 0.0
+
+    @property
+    def turning(self) -> float:
+        """The speed scale of angular quantities: the rim speed, never below the centres' speed."""
+        return max(self.rim, self.speed)
 
     def to_json(self) -> dict[str, float]:
         return {"length_m": self.length, "travel_m": self.travel, "speed_m_s": self.speed,
-                "duration_s": self.duration}
+                "rim_speed_m_s": self.turning, "duration_s": self.duration}
 
 
 def scales(bodies: list[BodyMotion]) -> Scales:
@@ -127,8 +138,8 @@ def scales(bodies: list[BodyMotion]) -> Scales:
     rim = max((float(np.max(np.linalg.norm(b.w, axis=1))) * b.size for b in bodies if b.w is not None and len(b.w)),
               default=0.0)
     swept = float(np.linalg.norm(np.ptp(velocities, axis=0))) if len(velocities) else 0.0
-    speed = max(swept, rim, travel / max(duration, 1e-9))
-    return Scales(length, speed, max(duration, 1e-9), travel)
+    speed = max(swept, travel / max(duration, 1e-9))
+    return Scales(length, speed, max(duration, 1e-9), travel, max(rim, speed))
 
 
 def _common(a: BodyMotion, b: BodyMotion) -> int:
