@@ -21,6 +21,7 @@ from typing import Any
 
 from meceng.eval.behaviour import BehaviourTolerance, compare_behaviour
 from meceng.eval.components import check_components
+from meceng.eval.convergence import ConvergedRuns
 from meceng.eval.graph import GraphTolerance, compare_graphs
 from meceng.eval.solution import compare_solutions
 from meceng.tools.execution import Execution
@@ -124,12 +125,15 @@ def evaluate_rigid(
     tolerances: Tolerances | None = None,
     behaviour: BehaviourTolerance | None = None,
     refined: dict[str, Any] | None = None,
+    converged: ConvergedRuns | None = None,
 ) -> Verdict:
     """Grade a candidate execution against the reference execution of the same task instance.
 
     ``selected`` None means no component selection took place (grading a program directly);
     that stage is then recorded as not applicable and does not count against overall.
     ``refined``: the ground truth's motion with more steps (its own step error, for behaviour).
+    ``converged``: the motions behaviour compares instead, at the step count where the ground truth's
+    own step error no longer decides (``eval/convergence.py``); the paper's stages never read them.
     """
     tol = tolerances or Tolerances()
     if not reference.solved or reference.items is None or reference.trajectory is None:
@@ -148,7 +152,7 @@ def evaluate_rigid(
         reason = candidate.error or f"stopped at stage '{candidate.stage}'"
         stages.append(StageResult("finished_assemble", False, reason))
         stages += [StageResult(n, None, "not evaluated: assemble did not finish") for n in RIGID_STAGES[2:]]
-        return Verdict(tuple(stages), behaviour=_behaviour(candidate, reference, behaviour, refined))
+        return Verdict(tuple(stages), behaviour=_behaviour(candidate, reference, behaviour, refined, converged))
     stages.append(StageResult("finished_assemble", True, "mbs.Assemble() finished"))
 
     graph = compare_graphs(candidate.items, reference.items, tol.graph)
@@ -172,7 +176,7 @@ def evaluate_rigid(
         stages.append(StageResult("solution_match", None, "not evaluated: solver failed"))
     return Verdict(tuple(stages), tuple(graph.error_categories), tuple(graph.differences), norm,
                    topology_causes=graph.topology.to_json() if graph.topology else None,
-                   behaviour=_behaviour(candidate, reference, behaviour, refined))
+                   behaviour=_behaviour(candidate, reference, behaviour, refined, converged))
 
 
 def by_behaviour(verdict: Verdict) -> Verdict:
@@ -195,8 +199,13 @@ def by_behaviour(verdict: Verdict) -> Verdict:
 
 
 def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourTolerance | None,
-               refined: dict[str, Any] | None) -> dict[str, Any]:
-    return compare_behaviour(candidate.motion, reference.motion, tolerance, refined).to_json()
+               refined: dict[str, Any] | None, converged: ConvergedRuns | None = None) -> dict[str, Any]:
+    """The behaviour block: at the converged step count when the caller found one (with the record of
+    which and why under ``steps``), else the graded runs with ``refined``'s floor."""
+    if converged is None:
+        return compare_behaviour(candidate.motion, reference.motion, tolerance, refined).to_json()
+    verdict = compare_behaviour(converged.candidate, converged.truth, tolerance, converged.finer)
+    return {**verdict.to_json(), "steps": converged.convergence.to_json()}
 
 
 def _not_applicable(stage: StageResult) -> bool:

@@ -26,7 +26,7 @@ from meceng.tasks.base import TaskInstance
 from meceng.tasks.design_base import DesignTask
 from meceng.tools.execution import Execution, ExecutionLimits
 
-from .evaluation import Evaluator, not_run, refined
+from .evaluation import Evaluator, not_run
 from .graded import Graded
 from .grading import offload
 
@@ -85,15 +85,19 @@ async def grade_design(evaluator: Evaluator, instance: TaskInstance, code: str |
     stages.append(StageResult(ONE_SIMULATION, True, f"one solver call (line {simulations.lines[0]})"))
 
     program = task.program(values)
+    tolerance = tolerance_for(task.system)
     reference_task = asyncio.ensure_future(evaluator.ground_truth(instance, program))
-    refined_task = asyncio.ensure_future(evaluator.ground_truth(refined(instance), program))
+    # behaviour at the step count where the reference's own step error no longer decides (issue 43)
+    truth_task = asyncio.ensure_future(
+        evaluator.convergence(instance, program, lambda: asyncio.shield(reference_task), tolerance))
     candidate = await evaluator.execute(code, instance, check=True)
-    reference, finer = await reference_task, await refined_task
+    reference = await reference_task
+    converged = await evaluator.converged_runs(code, instance, candidate, await truth_task)
     chain = await offload(
         evaluator.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
         steps=instance.sim.steps, selected=selected, required=instance.required_components,
         dependencies=evaluator.catalog.dependency_map(), tolerances=evaluator.tolerances,
-        behaviour=tolerance_for(task.system), refined=finer.motion)
+        behaviour=tolerance, converged=converged)
     open_verdict = by_behaviour(chain)
     value = None
     if reference.times is not None and reference.trajectory is not None and reference.solved:

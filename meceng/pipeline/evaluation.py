@@ -14,14 +14,15 @@ import time
 from collections.abc import Awaitable, Callable
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Generic, TypeVar
 
 import numpy as np
 
 from meceng.catalog.catalogs import assembly_catalog, part_catalog, rigid_catalog
 from meceng.catalog.component import Catalog
-from meceng.eval.behaviour import tolerance_for
+from meceng.eval.behaviour import BehaviourTolerance, tolerance_for
 from meceng.eval.chain import Tolerances, Verdict, by_behaviour, evaluate_rigid
+from meceng.eval.convergence import ConvergedRuns
 from meceng.eval.parts import evaluate_part, load_mesh_library, minimum_maxh, part_data
 from meceng.tasks.base import TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
@@ -30,25 +31,29 @@ from meceng.tools.meshcheck import check_mesh_size
 from meceng.tools.recording import MOTION_SAMPLES, REFINE, recording
 from meceng.tools.warm import WarmPool
 
+from .converged import SLIM, ConvergedTruth, at_steps, candidate_runs, fact_variant, find_convergence, from_fact, slim
 from .grading import GradingPool, offload
 from .store import ReferenceStore, reference_key
 
+T = TypeVar("T")
 
-class ReferenceCache:
-    """Ground-truth executions, run once per task instance and shared by everyone who asks."""
 
-    def __init__(self, run: Callable[[TaskInstance], Awaitable[Execution]]) -> None:
+class ReferenceCache(Generic[T]):
+    """Ground-truth executions (or what is found from them), run once per task instance and shared
+    by everyone who asks."""
+
+    def __init__(self, run: Callable[[TaskInstance], Awaitable[T]]) -> None:
         self._run = run
-        self._tasks: dict[str, asyncio.Task[Execution]] = {}
+        self._tasks: dict[str, asyncio.Task[T]] = {}
 
-    def start(self, instance: TaskInstance) -> asyncio.Task[Execution]:
+    def start(self, instance: TaskInstance) -> asyncio.Task[T]:
         task = self._tasks.get(instance.key)
         if task is None:
             task = asyncio.ensure_future(self._run(instance))
             self._tasks[instance.key] = task
         return task
 
-    async def get(self, instance: TaskInstance) -> Execution:
+    async def get(self, instance: TaskInstance) -> T:
         return await asyncio.shield(self.start(instance))
 
     def discard(self, key: str) -> None:
@@ -59,14 +64,14 @@ class ReferenceCache:
         _cancel(self._tasks.pop(key, None))
 
 
-def _cancel(task: asyncio.Task[Execution] | None) -> None:
+def _cancel(task: asyncio.Task[Any] | None) -> None:
     if task is not None and not task.done():
         task.cancel()
 
 
 def refined(instance: TaskInstance) -> TaskInstance:
     """The instance simulated with twice the steps (the behaviour verdict's step-error run)."""
-    return replace(instance, sim=replace(instance.sim, steps=REFINE * instance.sim.steps))
+    return at_steps(instance, REFINE)
 
 
 def not_run(code_error: str | None) -> Execution:
@@ -91,10 +96,11 @@ class Evaluator:
         self.part_catalog = parts or part_catalog()
         self.assembly_catalog = assembly_catalog()
         self.part_limits = replace(limits, mode="part", timeout_s=max(limits.timeout_s, part_timeout_s))
-        self.references = ReferenceCache(self._run_reference)
-        # the ground truth again with twice the steps: its own time-stepping error, which the behaviour
-        # verdict allows a program built another way (levels 1-2 and 3b)
-        self.refined = ReferenceCache(self._run_refined)
+        self.references: ReferenceCache[Execution] = ReferenceCache(self._run_reference)
+        # the ground truth again with twice the steps (its own time-stepping error, which the behaviour
+        # verdict allows a program built another way), and where that binds with 4, 8, ... x the steps
+        # until it does not: the step count behaviour compares at (levels 1-2 and 3b; pipeline/converged.py)
+        self.converged: ReferenceCache[ConvergedTruth] = ReferenceCache(self._run_converged)
         self._remeshed: dict[tuple[str, float], asyncio.Task[Execution]] = {}
 
     def catalog_for(self, instance: TaskInstance) -> Catalog:
@@ -106,7 +112,7 @@ class Evaluator:
     def release(self, instance: TaskInstance) -> None:
         """The task is graded: its ground-truth executions are not needed again in this run."""
         self.references.discard(instance.key)
-        self.refined.discard(instance.key)
+        self.converged.discard(instance.key)
         for key in [k for k in self._remeshed if k[0] == instance.key]:
             _cancel(self._remeshed.pop(key))
 
@@ -117,7 +123,7 @@ class Evaluator:
         if instance.kind != "assembly" and instance.design is None:
             self.references.start(instance)
             if instance.kind == "rigid":
-                self.refined.start(instance)
+                self.converged.start(instance)
 
     def graded_limits(self, instance: TaskInstance) -> ExecutionLimits:
         """The limits a graded level 1-2/3b program runs under: the states at t = 0 and at the end
@@ -138,8 +144,54 @@ class Evaluator:
                          save_fem_to=str(save_to) if save_to is not None else None)
         return await execute(program, "", limits, check=check, pool=self.pool, slots=self.slots)
 
-    async def _run_refined(self, instance: TaskInstance) -> Execution:
-        return await self.ground_truth(refined(instance), instance.reference_program)
+    async def run_motion(self, program: str, instance: TaskInstance, check: bool,
+                         files: dict[str, Path] | None = None) -> Execution:
+        """A run for behaviour only (a converged run): its motion and outcome (``converged.slim``)."""
+        limits = recording(self.limits, instance.sim.end_time, MOTION_SAMPLES)
+        return slim(await execute(program, instance.sim.block(), limits, check=check, pool=self.pool, files=files,
+                                  slots=self.slots))
+
+    async def _run_converged(self, instance: TaskInstance) -> ConvergedTruth:
+        return await self.convergence(instance, instance.reference_program, lambda: self.references.get(instance))
+
+    async def convergence(self, instance: TaskInstance, program: str, nominal: Callable[[], Awaitable[Execution]],
+                          tolerance: BehaviourTolerance | None = None, files: dict[str, Path] | None = None
+                          ) -> ConvergedTruth:
+        """The step count behaviour compares ``program`` (a ground truth) at, and its runs there
+        (``pipeline/converged.py``); ``nominal``: its graded run, shared with the caller. With a
+        store (and no parts to load) every run and R itself are kept there."""
+        tol = tolerance or tolerance_for(instance.slug)
+        limits = recording(self.limits, instance.sim.end_time, MOTION_SAMPLES)
+
+        async def run_at(factor: int) -> Execution:
+            if factor == 1:
+                return await nominal()
+            scaled = at_steps(instance, factor)
+            if self.store is None or files:
+                return await self.run_motion(program, scaled, check=False, files=files)
+            key = reference_key(program, scaled.sim.block(), limits, variant=SLIM)
+            return await self.store.fetch(key, lambda: self.run_motion(program, scaled, check=False))
+
+        if self.store is None or files:
+            return await find_convergence(run_at, instance.sim.steps, tol)
+        key = reference_key(program, instance.sim.block(), limits, variant=fact_variant(tol))
+        fact = await asyncio.to_thread(self.store.fact, key)
+        if fact is not None:
+            return await from_fact(run_at, fact, instance.sim.steps)
+        found = await find_convergence(run_at, instance.sim.steps, tol)
+        if found.complete:
+            await asyncio.to_thread(self.store.put_fact, key, found.convergence.to_json())
+        return found
+
+    async def converged_runs(self, code: str | None, instance: TaskInstance, candidate: Execution,
+                             truth: ConvergedTruth, files: dict[str, Path] | None = None) -> ConvergedRuns:
+        """The motions behaviour compares (the candidate again at R x the steps when R > 1)."""
+
+        async def again(factor: int) -> Execution:
+            assert code is not None  # a candidate without a program never solved: not run again
+            return await self.run_motion(code, at_steps(instance, factor), check=True, files=files)
+
+        return await candidate_runs(again, candidate, truth)
 
     async def _run_reference(self, instance: TaskInstance) -> Execution:
         return await self.ground_truth(instance, instance.reference_program)
@@ -179,21 +231,21 @@ class Evaluator:
         if files:
             reference_task = asyncio.ensure_future(
                 self.execute(instance.reference_program, instance, check=False, files=files))
-            refined_task = asyncio.ensure_future(
-                self.execute(instance.reference_program, refined(instance), check=False, files=files))
+            truth_task = asyncio.ensure_future(self.convergence(
+                instance, instance.reference_program, lambda: asyncio.shield(reference_task), files=files))
         else:
             reference_task = asyncio.ensure_future(self.references.get(instance))
-            refined_task = asyncio.ensure_future(self.refined.get(instance))
+            truth_task = asyncio.ensure_future(self.converged.get(instance))
         candidate = not_run(code_error) if code is None else await self.execute(code, instance, check=True, files=files)
         reference = await reference_task
-        finer = await refined_task
+        converged = await self.converged_runs(code, instance, candidate, await truth_task, files)
         # off the event loop and off this process: graph isomorphism and trajectory resampling take
         # ~10 ms a task, during which no LLM answer would be read, and they scale with the cores
         verdict = await offload(
             self.grading, evaluate_rigid, candidate, reference, end_time=instance.sim.end_time,
             steps=instance.sim.steps, selected=selected, required=instance.required_components,
             dependencies=self.catalog_for(instance).dependency_map(), tolerances=self.tolerances,
-            behaviour=tolerance_for(instance.slug), refined=finer.motion,
+            behaviour=tolerance_for(instance.slug), converged=converged,
         )
         if instance.texts == "open":  # an engineer's words leave the writing free: graded by behaviour
             verdict = by_behaviour(verdict)

@@ -28,6 +28,7 @@ from dataclasses import asdict, dataclass
 from functools import cache
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+from typing import Any
 
 from meceng.logs import get_logger
 from meceng.tasks.drafts import without_header
@@ -61,15 +62,17 @@ def stack_fingerprint() -> str:
     return ";".join(parts)
 
 
-def reference_key(program: str, sim_block: str, limits: ExecutionLimits) -> str:
+def reference_key(program: str, sim_block: str, limits: ExecutionLimits, variant: str = "") -> str:
     """The digest a ground-truth execution is stored under. The program's leading comment block (its
     title and task text) does not run: a ground truth stored for the paper's text serves the open
-    one's too."""
+    one's too. ``variant``: what else is stored for the same run (behaviour's slim converged runs,
+    the step count it compares at: ``pipeline/converged.py``); empty for the execution itself, whose
+    keys stay as they were."""
     program = without_header(program)[0]
     shape = {k: v for k, v in asdict(limits).items()
              if k in ("mode", "n_modes", "guard", "inspect_times", "inspect_loads", "motion_grid")}
     text = json.dumps({"format": FORMAT, "program": program, "sim": sim_block, "limits": shape,
-                       "stack": stack_fingerprint()}, sort_keys=True)
+                       "stack": stack_fingerprint(), **({"variant": variant} if variant else {})}, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
 
 
@@ -107,6 +110,29 @@ class ReferenceStore:
                 pickle.dump(execution, handle, protocol=pickle.HIGHEST_PROTOCOL)
                 handle.flush()
                 os.fsync(handle.fileno())
+            os.replace(tmp, target)
+        finally:
+            with contextlib.suppress(FileNotFoundError):
+                tmp.unlink()
+
+    def fact(self, key: str) -> dict[str, Any] | None:
+        """A small finding stored beside the executions (``<digest>.json``), or None."""
+        try:
+            found = json.loads(self.path(key).with_suffix(".json").read_text())
+        except FileNotFoundError:
+            return None
+        except (OSError, ValueError) as exc:
+            log.warning("unreadable reference fact, found again", key=key, error=str(exc))
+            return None
+        return found if isinstance(found, dict) else None
+
+    def put_fact(self, key: str, fact: dict[str, Any]) -> None:
+        """Store a finding as JSON, written under a name of its own and renamed into place."""
+        target = self.path(key).with_suffix(".json")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        tmp = target.with_name(f".{target.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
+        try:
+            tmp.write_text(json.dumps(fact, sort_keys=True))
             os.replace(tmp, target)
         finally:
             with contextlib.suppress(FileNotFoundError):
