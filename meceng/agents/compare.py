@@ -174,8 +174,9 @@ def _tolerances(agreement: Agreement, refined: bool) -> str:
     r = verdict.relative
     text = (f"tolerances: {num(100 * r)} % of the smaller of the two motions' scales: positions "
             f"{num(r * scale.travel)} m (of the farthest a centre of mass travels, {num(scale.travel)} m), velocities "
-            f"{num(r * scale.speed)} m/s (of the range of speeds, {num(scale.speed)} m/s), angular velocities and axes "
-            "by what moves a point at the body's inertia radius as much")
+            f"{num(r * scale.speed)} m/s (of the range of the centres of mass' speeds, {num(scale.speed)} m/s), "
+            "angular velocities and axes by what moves a point at the body's inertia radius as much (angular "
+            f"velocities: {num(100 * r)} % of the largest rim speed, {num(scale.turning)} m/s)")
     if refined:
         widened = "; ".join(verdict.widened) or "none"
         text += f"; both run again with twice the steps: widened by a program's own step error: {widened}"
