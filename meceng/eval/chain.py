@@ -205,7 +205,22 @@ def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourT
     if converged is None:
         return compare_behaviour(candidate.motion, reference.motion, tolerance, refined).to_json()
     verdict = compare_behaviour(converged.candidate, converged.truth, tolerance, converged.finer)
-    return {**verdict.to_json(), "steps": converged.convergence.to_json()}
+    out = {**verdict.to_json(), "steps": converged.convergence.to_json()}
+    steps = converged.convergence
+    if steps.factor > 1 or steps.note:  # where the comparison is not the graded runs', the detail says so
+        said = [f"compared at {steps.factor} x the steps ({steps.steps})"]
+        if not steps.converged:
+            counts: dict[str, int] = {}
+            for widened in verdict.widened:
+                quantity = widened.split(" of ", 1)[0]
+                counts[quantity] = counts.get(quantity, 0) + 1
+            said.append("not converged within the cost bound: the ground truth's own step error still widens " + (
+                ", ".join(f"the {q} of {n} bod{'y' if n == 1 else 'ies'}" for q, n in counts.items())
+                if counts else "no tolerance it decides"))
+        if steps.note:
+            said.append(steps.note)
+        out["detail"] = f"{out['detail']} [{'; '.join(said)}]"
+    return out
 
 
 def _not_applicable(stage: StageResult) -> bool:
