@@ -8,13 +8,15 @@ Item types, creation order, reference points and local axes do not enter.
 
 Every tolerance is a fraction ``relative`` of the ground truth's own scales (``Scales``): positions
 within ``relative`` x the motion's range (the farthest a centre of mass travels, at least 1 % of the
-system's size), velocities within ``relative`` x its range of speeds, a body's angular velocity and
-axes within what moves a point at the body's inertia radius by ``relative`` x its speeds and size,
-a flexible body's interface points within 10 x ``relative`` of their travel; and never less than 3 x
-what the ground truth's own time stepping moves a quantity by (the same program with twice the
-steps). Sensitive systems (an unstable equilibrium, chaotic or impacting motion) get a horizon per
-task model: the motion is compared up to the time two correct formulations of the ground truth
-stay within the tolerance (``BEHAVIOUR_HORIZONS``, measured by ``scripts/behaviour_sensitivity.py``).
+system's size), velocities within ``relative`` x the range of the centres of mass' velocities, a
+body's angular velocity and axes within what moves a point at the body's inertia radius by
+``relative`` x the largest rim speed and the system's size, a flexible body's interface points within
+10 x ``relative`` of their travel; and never less than 3 x what the ground truth's own time stepping
+moves a quantity by (the same program with twice the steps). Where that floor would bind, the
+caller compares runs at more steps instead (``eval/convergence.py``). Sensitive systems (an unstable
+equilibrium, chaotic or impacting motion) get a horizon per task model: the motion is compared up
+to the time two correct formulations of the ground truth stay within the tolerance
+(``BEHAVIOUR_HORIZONS``, measured by ``scripts/behaviour_sensitivity.py``).
 """
 
 from __future__ import annotations
