@@ -7,9 +7,12 @@
    realistic fault each; behaviour must fail every draft whose motion differs;
 3. the mutation corpora (``tests/corpus``) of levels 1 and 2 (and 3b with ``--assemblies``).
 
+``--levels 3b --assemblies`` measures the assemblies alone (their parts are made first, ~15 s each).
+
 Prints one table per set, the disagreements by name, and the totals.
 
-    python scripts/behaviour_agreement.py [--assemblies] [--only alternatives,drafts,corpus] [--json FILE]
+    python scripts/behaviour_agreement.py [--assemblies] [--levels 1,2,3b] [--only alternatives,drafts,corpus]
+                                          [--json FILE]
 """
 
 from __future__ import annotations
@@ -56,7 +59,8 @@ def row(name: str, verdict: Verdict, expected: str) -> dict[str, Any]:
             "detail": behaviour.get("detail", "")}
 
 
-async def collect(only: set[str], assemblies: bool) -> dict[str, list[dict[str, Any]]]:
+async def collect(only: set[str], assemblies: bool, levels: set[str] | None = None) -> dict[str, list[dict[str, Any]]]:
+    levels = levels or {"1", "2", "3b"}
     registry = default_registry()
     pool = WarmPool(child_env())
     evaluator = Evaluator(2, ExecutionLimits(timeout_s=300), Tolerances(), pool=pool)
@@ -68,14 +72,14 @@ async def collect(only: set[str], assemblies: bool) -> dict[str, list[dict[str, 
             if "alternatives" in only:
                 for alternative in ALTERNATIVES:
                     instance = registry.get(alternative.slug).instance(0)
-                    if instance.kind == "assembly" and not assemblies:
+                    if (instance.kind == "assembly" and not assemblies) or instance.level not in levels:
                         continue
                     (folder / instance.key.replace("/", "_")).mkdir(exist_ok=True)
                     verdict = await grade(evaluator, instance, alternative.program(instance), parts, folder)
                     out["alternatives"].append({**row(alternative.id, verdict, "pass"), "kind": alternative.kind})
                     print(".", end="", file=sys.stderr, flush=True)
             if "drafts" in only:
-                for model in registry.select(["1", "2"]):
+                for model in registry.select(sorted(levels & {"1", "2"})) if levels & {"1", "2"} else []:
                     instance = model.instance(0)
                     for draft in candidate_drafts(instance):
                         verdict = await grade(evaluator, instance, draft.program, parts, folder)
@@ -86,7 +90,7 @@ async def collect(only: set[str], assemblies: bool) -> dict[str, list[dict[str, 
             if "corpus" in only:
                 for path in sorted((ROOT / "tests" / "corpus").glob("*.py")):
                     level = path.name.split("_", 1)[0]
-                    if level not in ("1", "2", "3b") or (level == "3b" and not assemblies):
+                    if level not in levels or (level == "3b" and not assemblies):
                         continue
                     fields = dict(item.split("=", 1) for item in
                                   shlex.split(path.read_text().splitlines()[0].removeprefix("# corpus: ")))
@@ -123,9 +127,10 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--assemblies", action="store_true", help="level 3b too (parts are made: ~15 s each)")
     parser.add_argument("--only", default="alternatives,drafts,corpus")
+    parser.add_argument("--levels", default="1,2,3b", help="which levels' programs (3b needs --assemblies)")
     parser.add_argument("--json", type=Path, help="write every row here")
     args = parser.parse_args()
-    out = asyncio.run(collect(set(args.only.split(",")), args.assemblies))
+    out = asyncio.run(collect(set(args.only.split(",")), args.assemblies, set(args.levels.split(","))))
     for name, rows in out.items():
         if not rows:
             continue
