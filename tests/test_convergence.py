@@ -93,8 +93,11 @@ def _series(errors: dict[int, float], failed: tuple[int, ...] = ()):
     ({1: 1e-5, 2: 0.25e-5}, 2000, 1, True, [1, 2]),
     # second order: the self-error falls 4 x a doubling, settled at R = 4 (checked against 8)
     ({1: 1e-2, 2: 2.5e-3, 4: 6.25e-4, 8: 1.6e-4, 16: 4e-5}, 2000, 4, True, [1, 2, 4, 8]),
-    # never settles: stops at the cost bound (4000 steps: R = 8), not converged
-    ({1: 1.0, 2: 0.9, 4: 0.8, 8: 0.7, 16: 0.6, 32: 0.5}, 4000, 8, False, [1, 2, 4, 8, 16]),
+    # first order and far off: stops at the cost bound (4000 steps: R = 8), not converged
+    ({1: 0.0, 2: 1.0, 4: 1.5, 8: 1.75, 16: 1.875}, 4000, 8, False, [1, 2, 4, 8, 16]),
+    # a doubling that does not cut the self-error (0.1 m, then 0.1 m again): the steps do not decide it,
+    # R = 1 is kept with its floor, at the cost of one more ground-truth run
+    ({1: 0.0, 2: 0.1, 4: 0.0}, 2000, 1, False, [1, 2, 4]),
 ])
 async def test_r_is_found_by_doubling_until_the_self_error_settles(errors, steps, factor, converged, asked) -> None:
     run_at, called = _series(errors)
@@ -104,6 +107,7 @@ async def test_r_is_found_by_doubling_until_the_self_error_settles(errors, steps
     assert found.convergence.steps == factor * steps and len(found.convergence.checks) == len(asked) - 1
     record = found.convergence.to_json()
     assert record["factor"] == factor and record["converged"] is converged and record["cap"] == largest_factor(steps)
+    assert ("note" in record) is (factor == 1 and not converged)  # a stalled doubling says so
 
 
 async def test_a_failed_finer_run_ends_the_search_at_the_last_pair_that_ran() -> None:

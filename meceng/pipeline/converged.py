@@ -25,12 +25,14 @@ from meceng.eval.behaviour import STEP_MARGIN, BehaviourTolerance
 from meceng.eval.convergence import (
     CONVERGE_CAP,
     CONVERGED,
+    PROGRESS,
     STEP_BUDGET,
     ConvergedRuns,
     Convergence,
     StepCheck,
     largest_factor,
     settled,
+    stalled,
     step_check,
 )
 from meceng.tasks.base import TaskInstance
@@ -56,8 +58,8 @@ def slim(execution: Execution) -> Execution:
 
 def fact_variant(tolerance: BehaviourTolerance) -> str:
     """The store variant R is kept under: every setting that decides it."""
-    return (f"convergence:cap={CONVERGE_CAP}:budget={STEP_BUDGET}:converged={CONVERGED}:margin={STEP_MARGIN}:"
-            f"relative={tolerance.relative}:horizon={tolerance.horizon}")
+    return (f"convergence:cap={CONVERGE_CAP}:budget={STEP_BUDGET}:converged={CONVERGED}:progress={PROGRESS}:"
+            f"margin={STEP_MARGIN}:relative={tolerance.relative}:horizon={tolerance.horizon}")
 
 
 @dataclass(frozen=True)
@@ -72,11 +74,14 @@ class ConvergedTruth:
     complete: bool = True  # every run needed to find R ran (else R is not stored: found again next time)
 
 
-async def find_convergence(run_at: RunAt, nominal_steps: int, tolerance: BehaviourTolerance) -> ConvergedTruth:
+async def find_convergence(run_at: RunAt, nominal_steps: int, tolerance: BehaviourTolerance,
+                           cap: int = CONVERGE_CAP) -> ConvergedTruth:
     """Double R from 1 until the ground truth at R and 2R agree within the base tolerance
-    (``eval/convergence.settled``) or R reaches the cost bound (``largest_factor``). A run that fails
-    ends the search at the last R whose pair ran (R = 1 with no finer run: no floor, as before)."""
-    cap = largest_factor(nominal_steps)
+    (``eval/convergence.settled``) or R reaches the cost bound (``largest_factor``); a doubling that
+    does not cut the self-error by ``PROGRESS`` ends it at the R before (``stalled``). A run that
+    fails ends the search at the last R whose pair ran (R = 1 with no finer run: no floor, as before).
+    ``cap``: a lower bound on R than ``CONVERGE_CAP`` (an assembly's: ``ASSEMBLY_CAP``)."""
+    cap = largest_factor(nominal_steps, cap)
     runs: dict[int, asyncio.Future[Execution]] = {}
 
     def start(factor: int) -> asyncio.Future[Execution]:
@@ -87,7 +92,7 @@ async def find_convergence(run_at: RunAt, nominal_steps: int, tolerance: Behavio
     start(1)
     start(2)
     checks: list[StepCheck] = []
-    factor, complete = 1, True
+    factor, complete, note = 1, True, ""
     try:
         while True:
             coarse, fine = await start(factor), await start(2 * factor)
@@ -97,16 +102,24 @@ async def find_convergence(run_at: RunAt, nominal_steps: int, tolerance: Behavio
                 factor = max(1, factor // 2)
                 break
             checks.append(check)
-            if settled(check) or factor >= cap:
+            if settled(check):
+                break
+            if stalled(checks):
+                factor //= 2
+                note = (f"more steps do not resolve it: the self-error is {checks[-2].ratio:.3g} at R = {factor} and "
+                        f"{check.ratio:.3g} at R = {2 * factor}; compared at R = {factor} with its floor")
+                break
+            if factor >= cap:
                 break
             factor *= 2
     finally:
         for future in runs.values():
             if not future.done():
                 future.cancel()
-    note = "" if complete else "a ground-truth run with more steps failed: R is the last that ran"
-    convergence = Convergence(factor, nominal_steps, bool(checks) and settled(checks[-1]) and complete,
-                              tuple(checks), cap, note)
+    if not complete:
+        note = "a ground-truth run with more steps failed: R is the last that ran"
+    done = bool(checks) and settled(checks[-1]) and checks[-1].factor == factor and complete
+    convergence = Convergence(factor, nominal_steps, done, tuple(checks), cap, note)
     return ConvergedTruth(convergence, runs[factor].result(), runs[2 * factor].result(), runs[1].result(),
                           runs[2].result(), complete)
 
@@ -116,7 +129,7 @@ async def from_fact(run_at: RunAt, fact: dict[str, Any], nominal_steps: int) -> 
     factor = int(fact["factor"])
     checks = tuple(StepCheck(int(c["factor"]), float(c["ratio"]), str(c["quantity"])) for c in fact.get("checks", []))
     cap = int(fact.get("cap", CONVERGE_CAP))
-    convergence = Convergence(factor, nominal_steps, bool(fact["converged"]), checks, cap)
+    convergence = Convergence(factor, nominal_steps, bool(fact["converged"]), checks, cap, str(fact.get("note", "")))
     factors = sorted({1, 2, factor, 2 * factor})
     found = dict(zip(factors, await asyncio.gather(*(run_at(f) for f in factors)), strict=True))
     return ConvergedTruth(convergence, found[factor], found[2 * factor], found[1], found[2])
