@@ -80,7 +80,7 @@ async def find_convergence(run_at: RunAt, nominal_steps: int, tolerance: Behavio
     (``eval/convergence.settled``) or R reaches the cost bound (``largest_factor``); a doubling that
     does not cut the self-error by ``PROGRESS`` ends it at the R before (``stalled``). A run that
     fails ends the search at the last R whose pair ran (R = 1 with no finer run: no floor, as before).
-    ``cap``: a lower bound on R than ``CONVERGE_CAP`` (an assembly's: ``ASSEMBLY_CAP``)."""
+    ``cap``: the most R may be, below ``CONVERGE_CAP`` for an assembly (``ASSEMBLY_CAP``)."""
     cap = largest_factor(nominal_steps, cap)
     runs: dict[int, asyncio.Future[Execution]] = {}
 
@@ -143,7 +143,8 @@ async def candidate_runs(run_candidate: RunAt, candidate: Execution, truth: Conv
     if convergence.factor == 1:
         return ConvergedRuns(convergence, candidate.motion, truth.truth.motion, truth.finer.motion)
     if not candidate.solved:
-        said = dataclasses.replace(convergence, note="the candidate's run did not finish: compared as it ran")
+        said = dataclasses.replace(convergence, note=_and(convergence.note,
+                                                           "the candidate's run did not finish: compared as it ran"))
         return ConvergedRuns(said, candidate.motion, truth.truth.motion, truth.finer.motion)
     again = await run_candidate(convergence.factor)
     if again.solved and again.motion is not None:
@@ -151,6 +152,12 @@ async def candidate_runs(run_candidate: RunAt, candidate: Execution, truth: Conv
     why = f"{again.error_kind or again.stage}: {(again.error or '')[:200]}"
     fallback = dataclasses.replace(
         convergence, factor=1, converged=False,
-        note=f"the candidate's run at {convergence.factor} x the steps failed ({why}): compared at the nominal "
-             "steps, tolerances widened by the ground truth's step error there")
+        note=_and(convergence.note, f"the candidate's run at {convergence.factor} x the steps failed ({why}): "
+                                    "compared at the nominal steps, tolerances widened by the ground truth's step "
+                                    "error there"))
     return ConvergedRuns(fallback, candidate.motion, truth.nominal.motion, truth.floor.motion)
+
+
+def _and(*notes: str) -> str:
+    """Notes that all hold, in order (an empty one left out)."""
+    return "; ".join(n for n in notes if n)
