@@ -124,3 +124,23 @@ async def test_a_gyroscope_with_its_spin_a_few_percent_off_fails_where_positions
         assert program != instance.reference_program
         same, moved, _ = await _grade(evaluator, instance, program)
         assert moved.solved and same.behaviour["passed"], same.behaviour["detail"]
+
+
+async def test_r_is_found_once_and_kept_in_the_reference_store(tmp_path) -> None:
+    """Two coupled mass points (seed 0) need R = 2: the first evaluator runs the ground truth at 1, 2
+    and 4 x the steps and stores them with R; a second one on the same store runs no ground truth
+    and compares at the same R."""
+    from meceng.pipeline.store import ReferenceStore
+
+    instance = default_registry().get("two_mass_points_with_springs").instance(0)
+    first = ReferenceStore(tmp_path)
+    truth = await Evaluator(2, ExecutionLimits(), Tolerances(), store=first).converged.get(instance)
+    assert truth.convergence.factor == 2 and truth.convergence.converged and first.made == 3
+    assert truth.truth.trajectory is None and truth.truth.motion is not None  # stored as its motion alone
+    assert len(list(tmp_path.rglob("*.json"))) == 1  # R, as a fact
+    again = ReferenceStore(tmp_path)
+    evaluator = Evaluator(2, ExecutionLimits(), Tolerances(), store=again)
+    stored = await evaluator.converged.get(instance)
+    assert (again.made, again.hits) == (0, 3) and stored.convergence.to_json() == truth.convergence.to_json()
+    verdict, _, _ = await evaluator.evaluate(instance, scaled(instance.reference_program, "damping", 1.5), None, None)
+    assert verdict.behaviour["steps"]["factor"] == 2 and (again.made, again.hits) == (0, 3)
