@@ -5,6 +5,7 @@ Modules, each one concern:
 
 - ``settings``: ``RunSettings``, what defines a run;
 - ``evaluation``: the ``Evaluator`` service that runs programs in isolation and grades them;
+- ``converged``: the step count behaviour compares at, found once per instance, and the runs there;
 - ``kinds``: what a rigid task, a part and an assembly add to the flow (catalog, scorer, record);
 - ``flow``: the one task flow for every level, and an assembly as its parts' flows + its own;
 - ``records``: the task record and its variants (lost to infrastructure, not started, failed);
