@@ -207,14 +207,15 @@ def _behaviour(candidate: Execution, reference: Execution, tolerance: BehaviourT
     verdict = compare_behaviour(converged.candidate, converged.truth, tolerance, converged.finer)
     out = {**verdict.to_json(), "steps": converged.convergence.to_json()}
     steps = converged.convergence
-    if steps.factor > 1 or steps.note:  # where the comparison is not the graded runs', the detail says so
-        said = [f"compared at {steps.factor} x the steps ({steps.steps})"]
+    if steps.factor > 1 or steps.note or not steps.converged:  # not the graded runs' plain comparison: say so
+        said = [f"compared at {steps.factor} x the steps ({steps.steps})"] if steps.factor > 1 else []
         if not steps.converged:
             counts: dict[str, int] = {}
             for widened in verdict.widened:
                 quantity = widened.split(" of ", 1)[0]
                 counts[quantity] = counts.get(quantity, 0) + 1
-            said.append("not converged within the cost bound: the ground truth's own step error still widens " + (
+            bound = f" at the cost bound (R <= {steps.cap})" if steps.factor >= steps.cap else ""
+            said.append(f"not converged{bound}: the ground truth's own step error still widens " + (
                 ", ".join(f"the {q} of {n} bod{'y' if n == 1 else 'ies'}" for q, n in counts.items())
                 if counts else "no tolerance it decides"))
         if steps.note:
