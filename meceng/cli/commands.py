@@ -214,7 +214,9 @@ def print_summary(run_json: Path) -> None:
               + (f"  [{lost_here} lost to the server]" if lost_here else "")
               + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
     behaviour = summary.get("behaviour")
-    if behaviour and behaviour.get("graded") and texts == "paper":  # an open text's overall is behaviour
+    # an open text's overall is behaviour, and so is a design task's (level 4): nothing to set beside it
+    paper_levels = [lv for lv in summary.get("levels", {}) if lv != "4"]
+    if behaviour and behaviour.get("graded") and texts == "paper" and paper_levels:
         differ = behaviour["paper_only"] + behaviour["behaviour_only"]
         print(f"behaviour (levels 1, 2, 3b): {behaviour['passed']}/{behaviour['graded']} passed "
               f"({100 * behaviour['rate']:.1f}%); the paper's verdict differs on {differ} "
