@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
+from meceng.inspect.coordinates import COORDINATE_TYPES, read_coordinate
 from meceng.inspect.geometry import rolling_disc, sphere_triangle
 from meceng.inspect.orientation import spins
 from meceng.inspect.system import (
@@ -103,7 +104,7 @@ def _markers_at(inspection: dict[str, Any], k: int) -> dict[int, dict[str, Any]]
 
 
 def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], node_body: dict[int, int],
-               marker_t0: dict[int, dict[str, Any]]) -> Connector:
+               marker_t0: dict[int, dict[str, Any]], nodes: list[dict[str, Any]]) -> Connector:
     exudyn_type = str(item.get("objectType", ""))
     if "trianglePoints" in item:  # Exudyn reports a sphere-triangle contact as ContactSphereSphere
         exudyn_type = "ContactSphereTriangle"
@@ -133,6 +134,10 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
     if exudyn_type == "JointRollingDisc" and len(numbers) == 2:
         shape = rolling_disc(item, points[0], frame)
         shape["disc_rotation"] = _rotation(marker_t0.get(numbers[1], {}).get("R"))
+    if exudyn_type in COORDINATE_TYPES:  # which coordinate of which body each end is
+        shape = {"coordinates": tuple(read_coordinate(markers[m] if 0 <= m < len(markers) else {}, nodes, node_body)
+                                      for m in numbers),
+                 "user_offset": item.get("offsetUserFunction", 0) not in (0, None)}
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
                      free, locked, parameters, derived, tuple(numbers), shape)
 
@@ -261,7 +266,7 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
                 states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
-            connectors.append(_connector(index, item, markers, node_body, marker_t0))
+            connectors.append(_connector(index, item, markers, node_body, marker_t0, nodes))
     loads = []
     for index, item in enumerate(items.get("loads", [])):
         marker = markers[int(item["markerNumber"])] if 0 <= int(item.get("markerNumber", -1)) < len(markers) else {}

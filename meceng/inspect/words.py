@@ -7,6 +7,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from meceng.inspect.coordinates import SAID as COORDINATE_SAID
+from meceng.inspect.coordinates import constraint_words, end_words
 from meceng.inspect.geometry import rolling_frame, rolling_words
 from meceng.inspect.system import Connector, SystemView, direction
 
@@ -29,10 +31,20 @@ def name_of(view: SystemView, index: int | None) -> str:
 
 
 def connector_line(view: SystemView, c: Connector) -> str:
-    ends = " — ".join(name_of(view, b) for b in c.bodies)
+    coordinates = c.geometry.get("coordinates")
+    if coordinates is not None:  # a coordinate connector: each end is one coordinate, not a body
+        ends = " — ".join(end_words(k, lambda b: name_of(view, b)) for k in coordinates)
+    else:
+        ends = " — ".join(name_of(view, b) for b in c.bodies)
     facts = [f"{c.label}: {ends}"]
     points = [p for p in c.points if p is not None]
-    if "corners" in c.geometry:
+    said = _SAID.get(c.exudyn_type, frozenset())  # said above in global terms
+    if coordinates is not None:
+        if c.exudyn_type == "ConnectorCoordinate":  # what it holds, in Exudyn's equation
+            facts[0] += ": " + constraint_words(coordinates, c.parameters, c.geometry.get("user_offset", False),
+                                                lambda b: name_of(view, b), num)
+            said = COORDINATE_SAID
+    elif "corners" in c.geometry:
         facts.append(_triangle(c))
     elif "axis_local" in c.geometry:
         facts += rolling_words(c.geometry, rolling_frame(c.geometry, c.points[1], c.geometry.get("disc_rotation")),
@@ -46,7 +58,6 @@ def connector_line(view: SystemView, c: Connector) -> str:
         facts.append(f"free: {c.free}")
     if c.locked:
         facts.append(f"locked: {c.locked}")
-    said = _SAID.get(c.exudyn_type, frozenset())  # said above in global terms
     facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes" and k not in said)
     facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
     return ", ".join(facts)

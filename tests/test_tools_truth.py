@@ -1,0 +1,95 @@
+"""Tools that tell the whole truth (issue 44): what a strong model found misleading, said too little
+or left it to work out in the answers of ``simulate``, ``compare`` and ``self_check``, each point on
+the task model it was seen on, through the tools as the agent calls them."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from meceng.agents.toolbox import Toolbox
+from meceng.catalog.catalogs import rigid_catalog
+from meceng.tasks.registry import default_registry
+
+
+def instance(slug: str, seed: int = 1) -> Any:
+    return default_registry().get(slug).instance(seed)
+
+
+async def tool(task: Any, name: str, **arguments: Any) -> str:
+    return (await Toolbox(task, rigid_catalog()).call(name, arguments)).text
+
+
+def lines_of(text: str, what: str) -> list[str]:
+    return [line.strip() for line in text.splitlines() if what in line]
+
+
+# ----------------------------------------------------------------------------- 3: which coordinate a constraint locks
+
+#: The elliptic trammel as the model wrote it: each slider guided by two CoordinateConstraints
+#: (slider 1 keeps y and z, slider 2 keeps x and y), written by hand on one ground node.
+TRAMMEL = """
+import exudyn as exu
+from exudyn.utilities import *
+import numpy as np
+SC = exu.SystemContainer()
+mbs = SC.AddSystem()
+m1, m2, x0, z0, k, d, g = {mass1}, {mass2}, {x0}, {z0}, {stiffness}, {damping}, {gravity}
+oGround = mbs.CreateGround(referencePosition=[0, 0, 0])
+oS1 = mbs.CreateMassPoint(referencePosition=[x0, 0, 0], mass=m1, gravity=[0, 0, -g])
+oS2 = mbs.CreateMassPoint(referencePosition=[0, 0, z0], mass=m2, gravity=[0, 0, -g])
+nG = mbs.AddNode(NodePointGround(referenceCoordinates=[0, 0, 0]))
+mG = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nG, coordinate=0))
+n1 = mbs.GetObject(oS1)['nodeNumber']
+n2 = mbs.GetObject(oS2)['nodeNumber']
+for node, coordinate in ((n1, 1), (n1, 2), (n2, 0), (n2, 1)):
+    mc = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=coordinate))
+    mbs.AddObject(CoordinateConstraint(markerNumbers=[mG, mc]))
+mbs.CreateDistanceConstraint(itemNumbers=[oS1, oS2])
+mbs.CreateSpringDamper(itemNumbers=[oGround, oS1], stiffness=k, damping=d)
+mbs.Assemble()
+"""
+
+
+def trammel() -> tuple[Any, str]:
+    task = instance("link_on_two_prismatic_joints")
+    return task, TRAMMEL.format(**task.params)
+
+
+async def test_each_coordinate_constraint_says_which_coordinate_it_locks_and_where() -> None:
+    task, code = trammel()
+    text = await tool(task, "simulate", code=code)
+    said = lines_of(text, "CoordinateConstraint:")
+    assert len(said) == 4 and len(set(said)) == 4, said  # four constraints, four different lines
+    z0 = task.params["z0"]
+    assert "#3 CoordinateConstraint: ground — #1 MassPoint's y: holds it at y = 0" in said[0], said[0]
+    assert "#4 CoordinateConstraint: ground — #1 MassPoint's z: holds it at z = 0" in said[1], said[1]
+    assert "#5 CoordinateConstraint: ground — #2 MassPoint's x: holds it at x = 0" in said[2], said[2]
+    assert "#6 CoordinateConstraint: ground — #2 MassPoint's y: holds it at y = 0" in said[3], said[3]
+    assert "a node coordinate" not in text and str(z0) not in said[1]
+
+
+async def test_a_coordinate_constraint_with_offset_factor_and_two_bodies_says_its_equation() -> None:
+    """factor1*q1 - q0 = offset, q displacements: ground first holds q1 at offset/factor1, ground second
+    holds q0 at -offset; two bodies are coupled (Exudyn's own equation, seen in its solution)."""
+    task, code = trammel()
+    code = code.replace("    mbs.AddObject(CoordinateConstraint(markerNumbers=[mG, mc]))\n", """\
+    if (node, coordinate) == (n1, 1):
+        mbs.AddObject(CoordinateConstraint(markerNumbers=[mG, mc], offset=0.1, factor1=2))
+    elif (node, coordinate) == (n2, 1):
+        mbs.AddObject(CoordinateConstraint(markerNumbers=[mc, mG], offset=0.1))
+    else:
+        mbs.AddObject(CoordinateConstraint(markerNumbers=[mG, mc]))
+""")
+    code = code.replace("mbs.CreateDistanceConstraint", """\
+mx = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=n1, coordinate=0))
+mz = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=n2, coordinate=2))
+mbs.AddObject(CoordinateSpringDamper(markerNumbers=[mx, mz], stiffness=10.0))
+mbs.CreateDistanceConstraint""")
+    text = await tool(task, "simulate", code=code)
+    said = lines_of(text, "CoordinateConstraint:")
+    assert "#1 MassPoint's y: holds it at y = 0.05 (its reference 0 plus offset/factor1 = 0.1/2)" in said[0], said
+    assert "#2 MassPoint's y — ground: holds it at y = -0.1 (its reference 0 minus offset 0.1)" in said[3], said
+    motion = text.split("motion (sampled):")[1]
+    assert ", 0.05, 0)" in motion and "position (0, -0.1, " in motion  # Exudyn's solution agrees with the words
+    spring = lines_of(text, "CoordinateSpringDamper:")[0]
+    assert "#1 MassPoint's x — #2 MassPoint's z" in spring, spring
