@@ -93,3 +93,70 @@ mbs.CreateDistanceConstraint""")
     assert ", 0.05, 0)" in motion and "position (0, -0.1, " in motion  # Exudyn's solution agrees with the words
     spring = lines_of(text, "CoordinateSpringDamper:")[0]
     assert "#1 MassPoint's x — #2 MassPoint's z" in spring, spring
+
+
+# ----------------------------------------------------------------------------- 4, 5: what a contact sets and what acts
+
+
+def wall(seed: int = 1) -> tuple[Any, str]:
+    task = instance("pendulum_wall_impacting", seed)
+    return task, task.reference_program
+
+
+async def test_a_contact_line_shows_what_was_set_and_what_acts_not_idle_defaults() -> None:
+    task, code = wall()
+    line = lines_of(await tool(task, "simulate", code=code), "SphereTriangleContact:")[0]
+    for idle in ("frictionProportionalZone", "contactStiffnessExponent", "adhesionExponent", "includeEdges 7"):
+        assert idle not in line, line  # Exudyn's defaults, which change nothing here
+    for acting in ("contactStiffness 4.3e+04", "contactDamping 0", "restitutionCoefficient 0.76", "impactModel 2"):
+        assert acting in line, line
+    assert "its face and all three edges" in line, line
+    # set, but without effect: a friction zone without friction, a restitution the linear model does not use
+    idle = code.replace("impactModel=2, restitutionCoefficient=restitution)",
+                        "impactModel=0, restitutionCoefficient=restitution, frictionProportionalZone=0.01)")
+    line = lines_of(await tool(task, "simulate", code=idle), "SphereTriangleContact:")[0]
+    assert ("set but without effect here: frictionProportionalZone 0.01 (no friction: dynamicFriction 0), "
+            "restitutionCoefficient 0.76 (impactModel 0 uses contactDamping only)") in line, line
+    # with friction, its proportional zone acts, default or not
+    rough = code.replace("impactModel=2,", "impactModel=2, dynamicFriction=0.3,")
+    line = lines_of(await tool(task, "simulate", code=rough), "SphereTriangleContact:")[0]
+    assert "dynamicFriction 0.3" in line and "frictionProportionalZone 0.001" in line, line
+
+
+async def test_the_sphere_sphere_contact_leaves_out_its_idle_adhesion_model() -> None:
+    task = instance("sphere_sphere_and_sphere_ground_impact")
+    line = lines_of(await tool(task, "simulate", code=task.reference_program), "SphereSphereContact:")[0]
+    assert "adhesionExponent" not in line and "frictionProportionalZone" not in line, line
+    assert "restitutionCoefficient" in line and "spheresRadii" in line, line
+
+
+async def test_a_sphere_triangle_contact_says_that_its_side_does_not_matter() -> None:
+    task, code = wall()
+    line = lines_of(await tool(task, "simulate", code=code), "SphereTriangleContact:")[0]
+    assert ("the sphere's centre is on its - side; either side acts alike: the contact pushes the sphere away "
+            "from the triangle on the side its centre is on") in line, line
+
+
+async def test_the_side_of_a_sphere_triangle_contact_does_not_change_the_motion() -> None:
+    """What the words above say, seen in Exudyn: the wall's corners in the other order (its normal
+    turned over, the sphere on its + side) move the pendulum alike, impacts included."""
+    task, code = wall()
+    turned = code.replace("[radius, length, -2 * length],\n", "[radius, 0, 0],\n", 1)
+    turned = turned.replace("[radius, 0, 0]]),", "[radius, length, -2 * length]]),", 1)
+    assert turned != code and turned.count("[radius, 0, 0]") == 1
+    answer = await tool(task, "compare", code_a=code, code_b=turned)
+    assert answer.startswith("compare: A and B move alike"), answer
+    line = lines_of(await tool(task, "simulate", code=turned), "SphereTriangleContact:")[0]
+    assert "on its + side" in line, line
+
+
+def test_the_inspectors_contact_defaults_are_the_installed_exudyns() -> None:
+    """The defaults ``inspect/acting.py`` hides are Exudyn's own: a new Exudyn that changes one fails here."""
+    import exudyn.itemInterface as items
+
+    from meceng.inspect.acting import DEFAULTS
+
+    for exudyn_type, defaults in DEFAULTS.items():
+        made = dict(getattr(items, "Object" + exudyn_type)())
+        for key, value in defaults.items():
+            assert key in made and made[key] == value, (exudyn_type, key, made.get(key), value)

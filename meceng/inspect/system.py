@@ -80,6 +80,8 @@ class Connector:
     derived: dict[str, float] = field(default_factory=dict)  # initial length, gap, ...
     markers: tuple[int, ...] = ()
     geometry: dict[str, Any] = field(default_factory=dict)  # contact geometry (``geometry.py``)
+    #: parameters the program set that do nothing there: name -> (value, why) (``acting.py``)
+    idle: dict[str, tuple[Any, str]] = field(default_factory=dict)
 
     @property
     def label(self) -> str:

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
+from meceng.inspect.acting import sort_contact
 from meceng.inspect.coordinates import COORDINATE_TYPES, read_coordinate
 from meceng.inspect.geometry import rolling_disc, sphere_triangle
 from meceng.inspect.orientation import spins
@@ -125,8 +126,9 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
         local = item.get("rotationMarker0")
         if frame is not None and local is not None:
             frame = frame @ np.asarray(local, dtype=float).reshape(3, 3)
-    parameters = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k
-                  and _small(v) and (k in _ALWAYS_SHOWN or _nonzero(v))}
+    candidates = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k and _small(v)}
+    sorted_out = sort_contact(exudyn_type, candidates, _ALWAYS_SHOWN)  # a contact: what acts, what was set idle
+    parameters, idle = sorted_out or ({k: v for k, v in candidates.items() if k in _ALWAYS_SHOWN or _nonzero(v)}, {})
     axis, free, locked, derived = _semantics(exudyn_type, item, frame, points)
     shape: dict[str, Any] = {}
     if exudyn_type == "ContactSphereTriangle" and len(numbers) == 2:
@@ -139,7 +141,7 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
                                       for m in numbers),
                  "user_offset": item.get("offsetUserFunction", 0) not in (0, None)}
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
-                     free, locked, parameters, derived, tuple(numbers), shape)
+                     free, locked, parameters, derived, tuple(numbers), shape, idle)
 
 
 #: Parameters a model must see even at zero (a spring without damping is a fact, not a default).

@@ -9,7 +9,7 @@ import numpy as np
 
 from meceng.inspect.coordinates import SAID as COORDINATE_SAID
 from meceng.inspect.coordinates import constraint_words, end_words
-from meceng.inspect.geometry import rolling_frame, rolling_words
+from meceng.inspect.geometry import edges_words, rolling_frame, rolling_words
 from meceng.inspect.system import Connector, SystemView, direction
 
 
@@ -60,11 +60,14 @@ def connector_line(view: SystemView, c: Connector) -> str:
         facts.append(f"locked: {c.locked}")
     facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes" and k not in said)
     facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
+    if c.idle:
+        facts.append("set but without effect here: "
+                     + ", ".join(f"{k} {value_text(v)} ({why})" for k, (v, why) in c.idle.items()))
     return ", ".join(facts)
 
 
 _SAID = {"JointRollingDisc": frozenset({"discRadius", "discAxis", "planeNormal", "planePosition"}),
-         "ContactSphereTriangle": frozenset({"sphereRadius"})}
+         "ContactSphereTriangle": frozenset({"sphereRadius", "includeEdges"})}
 
 
 def value_text(v: object) -> str:
@@ -87,5 +90,8 @@ def _triangle(c: Connector) -> str:
     normal = direction(tuple(float(x) for x in g["normal"]))
     return (f"sphere (radius {num(g['radius'])}) centred at {vec(centre)}; triangle corners "
             + ", ".join(vec(p) for p in g["corners"])
-            + f" (global), normal {normal} (right-hand rule over the corners in order; the sphere's centre is on "
-            f"its {side} side), gap {num(g['gap'])} (centre to the triangle minus the radius; negative: penetrating)")
+            + f" (global), normal {normal} (right-hand rule over the corners in order); the sphere's centre is on "
+            f"its {side} side; either side acts alike: the contact pushes the sphere away from the triangle on the "
+            "side its centre is on (a centre that passes through the triangle is pushed out on the other side); "
+            f"contact with {edges_words(int(g.get('edges', 7)))}; gap {num(g['gap'])} (centre to the triangle minus "
+            "the radius; negative: penetrating)")
