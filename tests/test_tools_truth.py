@@ -160,3 +160,37 @@ def test_the_inspectors_contact_defaults_are_the_installed_exudyns() -> None:
         made = dict(getattr(items, "Object" + exudyn_type)())
         for key, value in defaults.items():
             assert key in made and made[key] == value, (exudyn_type, key, made.get(key), value)
+
+
+# ----------------------------------------------------------------------------- 6: a state at the time asked
+
+
+async def test_a_state_asked_for_is_reported_at_the_time_asked() -> None:
+    """Seed 5 of the wall pendulum: its impacts shorten steps, and the grid no longer meets t = 0.5;
+    the state is the step nearest to it (0.499998, said as 0.5), not the first one after (0.5001)."""
+    task, code = wall(5)
+    text = await tool(task, "simulate", code=code, times=[0.5])
+    motion = text.split("motion (sampled):")[1]
+    assert "t=0.5 #1 RigidBody" in motion and "t=0.5001" not in motion, motion
+    # only t = 0.5 was asked for: the run itself went on to its end time, and the answer must not say otherwise
+    assert "the run ended" not in text, motion
+
+
+async def test_a_time_between_two_steps_is_said_with_the_step_it_was_read_at() -> None:
+    task = instance("single_pendulum")
+    text = await tool(task, "simulate", code=task.reference_program, times=[0.5004, 1.0])
+    motion = text.split("motion (sampled):")[1]
+    assert ("t=0.5 (the solver step nearest to the asked t = 0.5004; steps of 0.001 s there) #1 MassPoint"
+            in motion), motion
+    assert "t=1 #1 MassPoint" in motion, motion
+
+
+async def test_a_run_that_stops_early_still_says_so() -> None:
+    task = instance("single_pendulum")
+    code = task.reference_program.replace("mbs.Assemble()", """\
+def stop(mbs, t):
+    return t < 0.7
+mbs.SetPostStepUserFunction(stop)
+mbs.Assemble()""")
+    text = await tool(task, "simulate", code=code, times=[0.5])
+    assert "the run ended at t=0.7" in text and "before the end time 2" in text, text

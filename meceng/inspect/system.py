@@ -124,6 +124,9 @@ class SystemView:
     marker_states: tuple[dict[int, tuple[float, ...]], ...] = ()  # marker positions at each sample time
     marker_rotations: tuple[dict[int, np.ndarray], ...] = ()  # rigid markers' rotations at each sample time
     spins: dict[int, Spin] = field(default_factory=dict)  # accumulated rotation per body (``orientation.py``)
+    asked: tuple[tuple[float, ...], ...] = ()  # per sample time, the times the model asked that it answers
+    steps: tuple[float | None, ...] = ()  # per sample time, the solver's step size there
+    run_end: float | None = None  # the last time the solver reached (the requested times need not be it)
 
     def body(self, index: int) -> Body | None:
         return next((b for b in self.bodies if b.index == index), None)

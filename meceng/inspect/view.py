@@ -292,7 +292,10 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
     return SystemView(view_bodies, tuple(connectors), tuple(loads), tuple(float(s["t"]) for s in states),
                       _ranges(view_bodies, nodes, ode2, trajectory, turns),
                       _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
-                      marker_rotations, turns)
+                      marker_rotations, turns,
+                      tuple(tuple(float(a) for a in s.get("asked") or ()) for s in states),
+                      tuple(float(s["step"]) if isinstance(s.get("step"), int | float) else None for s in states),
+                      float(times[-1]) if times is not None and len(times) else None)
 
 
 def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, tuple[float, ...] | str], ...]:
