@@ -194,3 +194,53 @@ mbs.SetPostStepUserFunction(stop)
 mbs.Assemble()""")
     text = await tool(task, "simulate", code=code, times=[0.5])
     assert "the run ended at t=0.7" in text and "before the end time 2" in text, text
+
+
+# ----------------------------------------------------------------------------- 7: the documentation
+
+
+def test_a_component_the_documentation_tells_the_model_to_use_comes_with_its_signature() -> None:
+    """'Close the loop with a SphericalJoint', 'combine it with a RevoluteJoint', 'use DistanceConstraint':
+    a component named in such an instruction, and not documented beside the one that names it, is
+    shown with its call there (the model may not have chosen it)."""
+    import re
+
+    from meceng.catalog.catalogs import assembly_catalog, part_catalog
+
+    told = r"\b(?:use|combine it with an?|close the loop\s+with an?)\s+"
+    missing = []
+    for catalog in (rigid_catalog(), part_catalog(), assembly_catalog()):
+        for component in catalog:
+            beside = {c.name for c in catalog.resolve([component.name])}
+            for other in catalog:
+                if other.name in beside or not re.search(told + rf"{other.name}\b", component.context):
+                    continue
+                call = re.search(rf"(mbs\.Create\w+|\b{other.name})\(", other.context)
+                if call is None or call.group(1) + "(" not in component.context:
+                    missing.append(f"{component.name} -> {other.name}")
+    assert not missing, missing
+
+
+def test_the_pd_control_text_says_which_sign_the_driven_body_gets_and_exudyn_agrees() -> None:
+    import exudyn as exu
+    from exudyn.utilities import InertiaCuboid
+
+    text = rigid_catalog().get("JointPDControl").context
+    assert "itemNumbers[1] receives minus the returned value" in text, text
+    assert "so that itemNumbers[1] is driven by tau = kP*(qd - q) + kD*(vd - q')" in text, text
+    # Exudyn: a function that returns +1 N*m turns the body of itemNumbers[1] the negative way
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    ground = mbs.CreateGround()
+    body = mbs.CreateRigidBody(referencePosition=[0, 0, 0], inertia=InertiaCuboid(1000, [0.1, 0.1, 0.1]))
+    mbs.CreateRevoluteJoint(itemNumbers=[ground, body], position=[0, 0, 0], axis=[0, 0, 1])
+    mbs.CreateTorsionalSpringDamper(itemNumbers=[ground, body], position=[0, 0, 0], axis=[0, 0, 1],
+                                    springTorqueUserFunction=lambda mbs, t, i, q, w, k, d, o: 1.0)
+    mbs.Assemble()
+    settings = exu.SimulationSettings()
+    settings.timeIntegration.endTime = 0.1
+    settings.timeIntegration.numberOfSteps = 100
+    settings.timeIntegration.verboseMode = 0
+    settings.solution.file.write = False
+    mbs.SolveDynamic(settings)
+    assert mbs.GetObjectOutputBody(body, exu.OutputVariableType.AngularVelocity, [0, 0, 0])[2] < -1.0
