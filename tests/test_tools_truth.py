@@ -23,6 +23,44 @@ def lines_of(text: str, what: str) -> list[str]:
     return [line.strip() for line in text.splitlines() if what in line]
 
 
+# ----------------------------------------------------------------------------- 1: where compare's scales come from
+
+
+def number_after(text: str, words: str) -> float:
+    import re
+
+    match = re.search(re.escape(words) + r" (-?[0-9.e+-]+)", text)
+    assert match, (words, text)
+    return float(match.group(1))
+
+
+async def test_compare_names_the_source_of_each_scale_and_the_fastest_centre_of_mass() -> None:
+    """The gyroscope: the speed scale is the disc's |ω|·r, a point at its inertia radius, some 250
+    times faster than its centre of mass ever moves; the answer says so, with both numbers."""
+    from meceng.tasks.alternatives import alternatives_of
+
+    task = instance("gyroscope_on_spherical_joint")
+    other = alternatives_of("gyroscope_on_spherical_joint")[0].program(task)
+    answer = await tool(task, "compare", code_a=task.reference_program, code_b=other)
+    line = lines_of(answer, "tolerances")[0]
+    assert "A's #1 RigidBody's |ω|·r: its largest angular speed" in line, line
+    assert "a point there, not its centre of mass, moves that fast" in line, line
+    speed = number_after(line, "velocities within")
+    fastest = number_after(line, "the fastest centre of mass, A's #1 RigidBody, moves at")
+    assert fastest < 0.01 * speed / 1e-3, line  # the centre of mass moves at under 1 % of the scale
+    assert "positions within" in line and "the farthest a centre of mass travels: A's #1 RigidBody" in line, line
+
+
+async def test_a_mass_point_systems_speed_scale_is_named_too() -> None:
+    """No rotation: the speed scale is the spread of the centres' velocities (the pendulum's swing),
+    and the fastest centre of mass is said beside it."""
+    task = instance("single_pendulum")
+    answer = await tool(task, "compare", code_a=task.reference_program, code_b=task.reference_program)
+    line = lines_of(answer, "tolerances")[0]
+    assert "the spread of A's centre-of-mass velocities" in line, line
+    assert "the fastest centre of mass, A's #1 MassPoint, moves at" in line, line
+
+
 # ----------------------------------------------------------------------------- 3: which coordinate a constraint locks
 
 #: The elliptic trammel as the model wrote it: each slider guided by two CoordinateConstraints
