@@ -61,6 +61,46 @@ async def test_a_mass_point_systems_speed_scale_is_named_too() -> None:
     assert "the fastest centre of mass, A's #1 MassPoint, moves at" in line, line
 
 
+# ----------------------------------------------------------------------------- 2: the energy against the motion's own
+
+
+async def test_self_check_reads_a_contact_loss_against_the_motions_energy_and_names_the_contact() -> None:
+    """The wall pendulum (e = 0.76, two impacts): it loses 1 - e⁴ ≈ 67 % of its swing's energy, which
+    the total (about -3.5 J: gravity's zero at the support) showed as -18.7 %."""
+    task, code = wall()
+    toolbox = Toolbox(task, rigid_catalog())
+    report = (await toolbox.self_check(code))["energy"]
+    e = task.params["restitution"]
+    assert abs(report["relative_change"] - (e ** 4 - 1)) < 0.05, report  # two impacts, each keeps e²
+    assert report["explained"] is True
+    text = (await toolbox.call("self_check", {"code": code})).text
+    assert "% of the motion's energy, its largest kinetic energy" in text, text
+    assert f"#3 SphereTriangleContact dissipates: restitution {e:.4g} (impact model 2)" in text, text
+    assert "so: a loss the elements above can explain" in text and "no problem found" in text, text
+
+
+async def test_self_check_says_a_loss_no_element_explains() -> None:
+    """A pendulum given a velocity along its rod: the constraint takes it at once, a loss of energy
+    that nothing in the system explains, and a finding; the same pendulum at rest keeps its energy."""
+    task = instance("single_pendulum")
+    code = task.reference_program.replace("mass=mass, gravity", "mass=mass, initialVelocity=[p0[0], p0[1], 0], gravity")
+    assert code != task.reference_program
+    text = await tool(task, "self_check", code=code)
+    assert "what dissipates or feeds energy: nothing" in text, text
+    assert "so: a loss no element of the system explains" in text, text
+    assert "no element of the system explains it" in text.split("energy (")[0], text  # among the findings
+    kept = await tool(task, "self_check", code=task.reference_program)
+    assert "so: the energy is kept" in kept and "no problem found" in kept, kept
+
+
+async def test_self_check_names_dampers_and_drives() -> None:
+    """The RRR robot: its joints are driven by spring-damper user functions (a drive feeds energy)."""
+    task = instance("rrr_articulated_robot_with_3d_cubic_trajectory")
+    text = await tool(task, "self_check", code=task.reference_program)
+    assert "#7 TorsionalSpringDamper feeds or takes energy: its springTorqueUserFunction" in text, text
+    assert "no element of the system explains" not in text, text
+
+
 # ----------------------------------------------------------------------------- 3: which coordinate a constraint locks
 
 #: The elliptic trammel as the model wrote it: each slider guided by two CoordinateConstraints

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from meceng.agents.compare import compare_programs
-from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
+from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, energy_balance, energy_words, parse_energy
 from meceng.agents.prompts import neutral
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
@@ -30,7 +30,7 @@ from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
-from meceng.tools.recording import REFINE, run_recorded
+from meceng.tools.recording import REFINE, recording, run_recorded
 from meceng.tools.warm import WarmPool
 
 MAX_TEXT = 1500
@@ -133,8 +133,8 @@ class Toolbox:
                 eigenfrequencies_are=FREQUENCIES_NOTE, nodes=part["nodes"])
         return _rounded(report)
 
-    async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None
-                   ) -> Execution:
+    async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None,
+                   motion: bool = False) -> Execution:
         # only the time span of the description; none of the ground truth's solver extras
         sim = self.instance.sim
         if sim is None:
@@ -147,6 +147,8 @@ class Toolbox:
                 f"print({ENERGY_MARK!r} + str([_e0, _meceng_energy(mbs)]))"))
         limits = (self.limits if inspect_times is None
                   else replace(self.limits, inspect_times=inspect_times, inspect_loads=True))
+        if motion:  # the bodies' motion on the common grid (``self_check``: the largest kinetic energy)
+            limits = recording(limits, sim.end_time)
         return await execute(code, block, limits, pool=self.pool, files=self.files)
 
     async def _recorded(self, code: str, finer: bool = False) -> Execution:
@@ -200,7 +202,7 @@ class Toolbox:
         return ToolResult("the picture in words (this model takes no images):\n" + text)
 
     async def self_check(self, code: str) -> dict[str, Any]:
-        run = await self._run(code, energy=True)
+        run = await self._run(code, energy=True, motion=True)
         findings: list[str] = []
         energy = parse_energy(run.stdout_tail)
         if run.error:
@@ -220,23 +222,25 @@ class Toolbox:
         report: dict[str, Any] = {"stage": run.stage, "degrees_of_freedom": run.system.get("degreeOfFreedom"),
                                    "findings": findings or ["no problem found"]}
         if energy is not None:
-            start, end = energy
-            scale = max(abs(start), abs(end), 1e-12)
-            report["energy"] = {"start": start, "end": end, "relative_change": (end - start) / scale,
-                                "note": ("kinetic + spring + gravity/constant-force potential; a system without "
-                                         "damping, contact losses or driving loads should keep it nearly constant")}
+            view = build_view(run.items, run.system, None) if run.items is not None else None
+            balance = energy_balance(*energy, run.motion, view, run.items)
+            report["energy"] = balance
+            if balance["explained"] is False:
+                findings.append(f"the energy changes by {100 * balance['relative_change']:.3g} % of the motion's "
+                                "energy and no element of the system explains it (see energy below)")
+                report["findings"] = findings
         return report
 
 
 def self_check_words(report: dict[str, Any]) -> str:
     """The self-check in words, like the other tools' answers: stage, degrees of freedom, each
-    finding on its own line, the energy balance with its relative change."""
+    finding on its own line, the energy balance against the motion's own energy with what in the
+    system dissipates or feeds energy (``energy.energy_words``)."""
     lines = [f"stage: {report['stage']}; degrees of freedom {report.get('degrees_of_freedom')}", "findings:"]
     lines += [f"  - {finding}" for finding in report["findings"]]
     energy = report.get("energy")
     if energy is not None:
-        lines.append(f"energy ({energy['note']}): {energy['start']:.6g} J at t = 0, {energy['end']:.6g} J at the "
-                     f"end, a relative change of {100 * energy['relative_change']:.3g} %")
+        lines += energy_words(energy)
     return "\n".join(lines)
 
 
