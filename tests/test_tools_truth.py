@@ -322,3 +322,23 @@ def test_the_pd_control_text_says_which_sign_the_driven_body_gets_and_exudyn_agr
     settings.solution.file.write = False
     mbs.SolveDynamic(settings)
     assert mbs.GetObjectOutputBody(body, exu.OutputVariableType.AngularVelocity, [0, 0, 0])[2] < -1.0
+
+
+# ------------------------------------------------------------ still open: a connector's user function
+
+
+async def test_a_connectors_user_function_is_shown_with_its_values_at_the_sampled_states() -> None:
+    """The RRR robot's joints are driven by torsional spring-dampers whose torque a user function
+    gives: each line says so, with the torque Exudyn applied (and the rotation it was given) at every
+    sampled time, so a model can check a drive's sign and size."""
+    import re
+
+    task = instance("rrr_articulated_robot_with_3d_cubic_trajectory")
+    text = await tool(task, "simulate", code=task.reference_program)
+    lines = lines_of(text, "TorsionalSpringDamper:")
+    assert len(lines) == 3
+    for line in lines:
+        assert "springTorqueUserFunction: its torque at the sampled states (itemNumbers[1] receives minus it):" in line
+        values = re.findall(r"t=([0-9.]+): (-?[0-9.e+-]+) N·m at rotation (-?[0-9.e+-]+) rad", line)
+        assert [t for t, _, _ in values] == ["0", "1", "2"], line
+    assert any(float(torque) != 0.0 for line in lines for torque in re.findall(r"t=[0-9.]+: (-?[0-9.e+-]+) N·m", line))

@@ -82,6 +82,10 @@ class Connector:
     geometry: dict[str, Any] = field(default_factory=dict)  # contact geometry (``geometry.py``)
     #: parameters the program set that do nothing there: name -> (value, why) (``acting.py``)
     idle: dict[str, tuple[Any, str]] = field(default_factory=dict)
+    #: a user function's force or torque: its key, and at each sampled time what Exudyn applied (and the
+    #: rotation, length or displacement the function was given), as the sandbox read it
+    user_function: str = ""
+    values: tuple[tuple[float, dict[str, Any]], ...] = ()
 
     @property
     def label(self) -> str:

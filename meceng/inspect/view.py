@@ -105,7 +105,8 @@ def _markers_at(inspection: dict[str, Any], k: int) -> dict[int, dict[str, Any]]
 
 
 def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], node_body: dict[int, int],
-               marker_t0: dict[int, dict[str, Any]], nodes: list[dict[str, Any]]) -> Connector:
+               marker_t0: dict[int, dict[str, Any]], nodes: list[dict[str, Any]], inspection: dict[str, Any]
+               ) -> Connector:
     exudyn_type = str(item.get("objectType", ""))
     if "trianglePoints" in item:  # Exudyn reports a sphere-triangle contact as ContactSphereSphere
         exudyn_type = "ContactSphereTriangle"
@@ -140,8 +141,11 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
         shape = {"coordinates": tuple(read_coordinate(markers[m] if 0 <= m < len(markers) else {}, nodes, node_body)
                                       for m in numbers),
                  "user_offset": item.get("offsetUserFunction", 0) not in (0, None)}
+    user = next((k for k, v in item.items() if k.endswith("UserFunction") and "offset" not in k
+                 and v not in (0, None, "")), "")
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
-                     free, locked, parameters, derived, tuple(numbers), shape, idle)
+                     free, locked, parameters, derived, tuple(numbers), shape, idle, user,
+                     _connector_values(index, inspection) if user else ())
 
 
 #: Parameters a model must see even at zero (a spring without damping is a fact, not a default).
@@ -268,7 +272,7 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
                 states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
-            connectors.append(_connector(index, item, markers, node_body, marker_t0, nodes))
+            connectors.append(_connector(index, item, markers, node_body, marker_t0, nodes, inspection))
     loads = []
     for index, item in enumerate(items.get("loads", [])):
         marker = markers[int(item["markerNumber"])] if 0 <= int(item.get("markerNumber", -1)) < len(markers) else {}
@@ -308,6 +312,12 @@ def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, t
         elif (vector := _tuple(value)) is not None:
             out.append((float(sample["t"]), vector))
     return tuple(out)
+
+
+def _connector_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, dict[str, Any]], ...]:
+    """A user-function connector's force or torque at the sampled times, as the sandbox read it."""
+    return tuple((float(sample["t"]), value) for sample in inspection.get("states", [])
+                 if isinstance(value := sample.get("connectors", {}).get(str(index)), dict))
 
 
 def _int(value: Any) -> int | None:

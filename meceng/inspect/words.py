@@ -60,6 +60,8 @@ def connector_line(view: SystemView, c: Connector) -> str:
         facts.append(f"locked: {c.locked}")
     facts.extend(f"{k} {value_text(v)}" for k, v in c.parameters.items() if k != "constrainedAxes" and k not in said)
     facts.extend(f"{k.replace('_', ' ')} {num(v)}" for k, v in c.derived.items())
+    if c.user_function:
+        facts.append(_user_values(c))
     if c.idle:
         facts.append("set but without effect here: "
                      + ", ".join(f"{k} {value_text(v)} ({why})" for k, (v, why) in c.idle.items()))
@@ -95,3 +97,33 @@ def _triangle(c: Connector) -> str:
             "side its centre is on (a centre that passes through the triangle is pushed out on the other side); "
             f"contact with {edges_words(int(g.get('edges', 7)))}; gap {num(g['gap'])} (centre to the triangle minus "
             "the radius; negative: penetrating)")
+
+
+_OUTPUTS = {"TorqueLocal": ("torque", "N·m"), "ForceLocal": ("force", "N"), "Force": ("force", "N")}
+_INPUTS = {"Rotation": ("rotation", "rad"), "Distance": ("length", "m"), "Displacement": ("displacement", "m")}
+
+
+def _user_values(c: Connector) -> str:
+    """A connector given by a user function: what it applied at each sampled time (Exudyn's connector
+    output, which is the function's value) and what it was given, so a drive's sign and size show."""
+    what = _OUTPUTS.get(next((v.get("value_name", "") for _, v in c.values if "value_name" in v), ""),
+                        ("force or torque", ""))
+    head = f"{c.user_function}: its {what[0]} at the sampled states"
+    if what[0] == "torque":
+        head += " (itemNumbers[1] receives minus it)"
+    if not c.values:
+        return head + ": not evaluated (no sampled state)"
+    said = []
+    for t, v in c.values:
+        if "value" not in v:
+            said.append(f"t={num(t)}: raised {v.get('error', 'an error')}")
+            continue
+        value = v["value"]
+        text = num(value[0]) if len(value) == 1 else vec(value)
+        text += f" {what[1]}" if what[1] else ""
+        given = _INPUTS.get(str(v.get("input_name", "")))
+        if given is not None and v.get("input") is not None:
+            put = v["input"]
+            text += f" at {given[0]} {num(put[0]) if len(put) == 1 else vec(put)} {given[1]}"
+        said.append(f"t={num(t)}: {text}")
+    return head + ": " + "; ".join(said)

@@ -116,6 +116,7 @@ class InspectionRecorder:
         self.states.append({"t": float(t), "bodies": bodies, "markers": markers, "asked": []})
         if self.loads:
             self.states[-1]["loads"] = user_load_values(self.mbs, self.api, t)
+            self.states[-1]["connectors"] = user_connector_values(self.mbs, self.api, self.objects, self.out)
         if initial:
             self.last_t = float(t)
             while self.pending and self.pending[0] <= float(t) + 1e-12:
@@ -167,3 +168,43 @@ def user_load_values(mbs: Any, api: dict[str, Any], t: float) -> dict[str, Any]:
                 out[str(index)] = value
             break
     return out
+
+
+#: What a connector given by a user function applies (the first output its type has), and what the
+#: function was given (its measured rotation, length or displacement).
+_CONNECTOR_OUTPUTS = ("TorqueLocal", "ForceLocal", "Force")
+_CONNECTOR_INPUTS = ("Rotation", "Distance", "Displacement")
+
+
+def _callable(value: Any) -> bool:
+    if isinstance(value, dict):  # Exudyn keeps it as {'function': f, 'type': 'Python'}
+        value = value.get("function")
+    return callable(value)
+
+
+def user_connector_values(mbs: Any, api: dict[str, Any], objects: list[dict[str, Any]], out: Any
+                          ) -> dict[str, Any]:
+    """What every connector whose force or torque a user function gives applies in the current state,
+    read with Exudyn's own connector outputs (which call the function as the solver does), with the
+    quantity the function was given: a model sees its drives' torques and signs, not only that a
+    function exists. A connector whose outputs raise is named with the exception's type."""
+    values: dict[str, Any] = {}
+    for index, item in enumerate(objects):
+        if not any(key.endswith("UserFunction") and "offset" not in key and _callable(value)
+                   for key, value in item.items()):
+            continue
+        said: dict[str, Any] = {}
+        for key, names in (("value", _CONNECTOR_OUTPUTS), ("input", _CONNECTOR_INPUTS)):
+            for name in names:
+                try:
+                    value = vector(api["GetObjectOutput"](mbs, index, getattr(out, name)))
+                except Exception as exc:
+                    if key == "value" and name == names[-1] and not said:
+                        said["error"] = type(exc).__name__
+                    continue
+                if value is not None:
+                    said[key], said[key + "_name"] = value, name
+                    break
+        if said:
+            values[str(index)] = said
+    return values
