@@ -342,3 +342,17 @@ async def test_a_connectors_user_function_is_shown_with_its_values_at_the_sample
         values = re.findall(r"t=([0-9.]+): (-?[0-9.e+-]+) N·m at rotation (-?[0-9.e+-]+) rad", line)
         assert [t for t, _, _ in values] == ["0", "1", "2"], line
     assert any(float(torque) != 0.0 for line in lines for torque in re.findall(r"t=[0-9.]+: (-?[0-9.e+-]+) N·m", line))
+
+
+# ----------------------------------------------------------------------------- still open: a program that fails early
+
+
+async def test_a_program_that_fails_before_assemble_is_answered_in_words_not_json() -> None:
+    task = instance("single_pendulum")
+    for code, stage, error in (("import exudyn as exu\nraise ValueError('no')", "started", "ValueError"),
+                               ("x = (\n", "refused", "syntax error")):
+        for name, arguments in (("simulate", {"code": code}), ("snapshot", {"code": code})):
+            text = await tool(task, name, **arguments)
+            assert text.startswith(f"stage: {stage}; error: ") and error in text, (name, text)
+            assert "{" not in text.splitlines()[-1] and not text.lstrip().startswith("{"), text
+            assert "no system to show: the program stopped before its system was assembled" in text, text

@@ -170,7 +170,7 @@ class Toolbox:
         end = self._end_time()
         run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end))
         if run.items is None:
-            return json.dumps({"stage": run.stage, "error": _trim(run.error)})
+            return _no_system(run)
         view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
         return render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
 
@@ -188,7 +188,7 @@ class Toolbox:
             at = _clip(_times(time), end)[:1] or (end,)
             run = await self._run(code, inspect_times=at)
             if run.items is None:
-                return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))
+                return ToolResult(_no_system(run))
             view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
             png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
             text = pictures.describe(view, (0.0, at[0]))
@@ -242,6 +242,13 @@ def self_check_words(report: dict[str, Any]) -> str:
     if energy is not None:
         lines += energy_words(energy)
     return "\n".join(lines)
+
+
+def _no_system(run: Execution) -> str:
+    """A program that stopped before ``Assemble``, in the words of every other answer (not JSON)."""
+    return (f"stage: {run.stage}; error: {_trim(run.error)}\n"
+            "no system to show: the program stopped before its system was assembled (mbs.Assemble()); "
+            "fix the error above and call again")
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:
