@@ -4,6 +4,7 @@ the task model it was seen on, through the tools as the agent calls them."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from meceng.agents.toolbox import Toolbox
@@ -73,8 +74,12 @@ async def test_self_check_reads_a_contact_loss_against_the_motions_energy_and_na
     e = task.params["restitution"]
     assert abs(report["relative_change"] - (e ** 4 - 1)) < 0.05, report  # two impacts, each keeps e²
     assert report["explained"] is True
+    p = task.params  # the swing's energy: from the start height to the lowest point
+    drop = p["mass"] * p["gravity"] * p["length"] * (1 - math.cos(math.radians(p["angle_deg"])))
+    assert abs(report["gravity_swing"] - drop) < 1e-3 * drop and report["motion_energy"] >= report["kinetic_max"]
     text = (await toolbox.call("self_check", {"code": code})).text
-    assert "% of the motion's energy, its largest kinetic energy" in text, text
+    assert "% of the motion's energy" in text and "(the larger of its largest kinetic energy" in text, text
+    assert "and the swing of gravity's potential" in text, text
     assert f"#3 SphereTriangleContact dissipates: restitution {e:.4g} (impact model 2)" in text, text
     assert "so: a loss the elements above can explain" in text and "no problem found" in text, text
 
@@ -97,7 +102,7 @@ async def test_self_check_names_dampers_and_drives() -> None:
     """The RRR robot: its joints are driven by spring-damper user functions (a drive feeds energy)."""
     task = instance("rrr_articulated_robot_with_3d_cubic_trajectory")
     text = await tool(task, "self_check", code=task.reference_program)
-    assert "#7 TorsionalSpringDamper feeds or takes energy: its springTorqueUserFunction" in text, text
+    assert "3 × TorsionalSpringDamper (#7–#9) feed or take energy: its springTorqueUserFunction" in text, text
     assert "no element of the system explains" not in text, text
 
 

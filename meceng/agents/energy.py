@@ -1,13 +1,7 @@
 """The energy check of ``self_check``: code run around the program's solver call that prints the
-total mechanical energy at start and end, the parser of that line, and the balance read against the
-motion's own energy.
-
-The total's size depends on where gravity's potential is zero: a pendulum that lost half its energy
-in two impacts read "-5.35 %" against a total of -1.5 J. So the change is said as a fraction of the
-motion's energy (its largest kinetic energy, from the motion record: ``eval/bodies.read_bodies``),
-beside the elements that dissipate or feed energy (contacts with their restitution, dampers, drives,
-loads whose work the total leaves out), so that a loss the system explains reads differently from
-one it does not."""
+total mechanical energy at start and end, the parser of that line, and the motion's own energy at
+the motion record's samples (kinetic energy, gravity's potential) that ``balance.py`` reads the
+change against."""
 
 from __future__ import annotations
 
@@ -17,7 +11,6 @@ from typing import Any
 import numpy as np
 
 from meceng.eval.bodies import read_bodies
-from meceng.inspect.system import SystemView
 
 ENERGY_MARK = "MECENG_ENERGY "
 
@@ -70,25 +63,7 @@ def parse_energy(stdout: str) -> tuple[float, float] | None:
     return None
 
 
-# ----------------------------------------------------------------------------- the balance, read against the motion
-
-#: A change below this fraction of the motion's energy is the integrator's own (generalised-alpha
-#: damps a little); above it, the answer says whether the system's elements explain it.
-KEPT = 1e-2
-
-
-def _user(value: Any) -> bool:
-    """A user function as the captured items hold it: ``'<function>'`` or ``{'function': ..., 'type': 'Python'}``."""
-    if isinstance(value, dict):
-        value = value.get("function")
-    return value not in (0, None, "", False)
-
-
-def _number(item: dict[str, Any], key: str, default: float = 0.0) -> float:
-    try:
-        return float(np.max(np.abs(np.asarray(item.get(key, default), dtype=float))))
-    except (TypeError, ValueError):
-        return default
+# ----------------------------------------------------------------------------- the motion's own energy
 
 
 def kinetic_energy(motion: dict[str, Any] | None) -> tuple[np.ndarray, np.ndarray] | None:
@@ -110,98 +85,26 @@ def kinetic_energy(motion: dict[str, Any] | None) -> tuple[np.ndarray, np.ndarra
     return bodies[0].t[:n], total
 
 
-def _contact(label: str, item: dict[str, Any]) -> tuple[str | None, str | None]:
-    """(what dissipates in a contact, or None; what it stores and the total does not count)."""
-    said = []
-    model = int(_number(item, "impactModel"))
-    e = _number(item, "restitutionCoefficient", 1.0)
-    if model in (1, 2) and e < 1.0:
-        said.append(f"restitution {e:.4g} (impact model {model}): an impact keeps about e² = {e * e:.3g} of its "
-                    "normal approach energy")
-    if _number(item, "contactDamping") > 0:
-        said.append(f"contactDamping {_number(item, 'contactDamping'):.4g}")
-    if _number(item, "dynamicFriction") > 0:
-        said.append(f"friction {_number(item, 'dynamicFriction'):.4g}")
-    if any(_number(item, k) > 0 for k in ("adhesionCoefficient", "constantPullOffForce", "contactPlasticityRatio")):
-        said.append("adhesion or plasticity")
-    stored = f"{label} stores energy while it is compressed, which the total does not count"
-    return (f"{label} dissipates: " + "; ".join(said) if said else None), stored
-
-
-def energy_elements(view: SystemView, items: dict[str, list[dict[str, Any]]]) -> tuple[list[str], list[str]]:
-    """(elements that dissipate energy, elements that feed or take it: drives, loads whose work the
-    total leaves out), each in words with the number that says how much."""
-    objects = items.get("objects", [])
-    raw_loads = items.get("loads", [])
-    dissipate: list[str] = []
-    feed: list[str] = []
-    for c in view.connectors:
-        item = objects[c.index] if 0 <= c.index < len(objects) else {}
-        user = [k for k, v in item.items() if "UserFunction" in k and _user(v)]
-        if "Contact" in c.exudyn_type:
-            lost, _ = _contact(c.label, item)
-            if lost:
-                dissipate.append(lost)
-        elif "SpringDamper" in c.exudyn_type and _number(item, "damping") > 0 and not user:
-            dissipate.append(f"{c.label} dissipates: damping {_number(item, 'damping'):.4g}")
-        if user:
-            feed.append(f"{c.label} feeds or takes energy: its {', '.join(user)} sets its force or motion")
-        elif "SpringDamper" in c.exudyn_type and any(_number(item, k) > 0 for k in ("force", "torque",
-                                                                                     "velocityOffset")):
-            feed.append(f"{c.label} feeds or takes energy: a constant force, torque or velocity offset")
-    for load, raw in zip(view.loads, raw_loads, strict=False):
-        kind = str(raw.get("loadType", ""))
-        on = f"{load.kind} on #{load.body}" if load.body is not None else load.kind
-        if load.vector is None:
-            feed.append(f"{on} feeds or takes energy: a user function")
-        elif kind not in ("MassProportional", "ForceVector") or load.body_fixed:
-            feed.append(f"{on} feeds or takes energy: its work is not in the total")
-    return dissipate, feed
-
-
-def energy_balance(start: float, end: float, motion: dict[str, Any] | None, view: SystemView | None,
-                   items: dict[str, list[dict[str, Any]]] | None) -> dict[str, Any]:
-    """The change of the total against the motion's own energy (its largest kinetic energy), and
-    whether the system's elements explain it: ``explained`` True, False, or None (kept)."""
-    change = end - start
-    report: dict[str, Any] = {"start": start, "end": end, "change": change}
-    series = kinetic_energy(motion)
-    if series is not None and len(series[1]) and float(np.max(series[1])) > 1e-12:
-        k = int(np.argmax(series[1]))
-        report["motion_energy"] = float(series[1][k])
-        report["motion_energy_time"] = float(series[0][k])
-    scale = report.get("motion_energy") or max(abs(start), abs(end), 1e-12)
-    report["relative_change"] = change / scale
-    dissipate, feed = energy_elements(view, items or {}) if view is not None else ([], [])
-    report["dissipate"], report["feed"] = dissipate, feed
-    if abs(report["relative_change"]) <= KEPT:
-        report["explained"] = None
-    else:
-        report["explained"] = bool(feed) or (change < 0 and bool(dissipate))
-    return report
-
-
-def energy_words(report: dict[str, Any]) -> list[str]:
-    """The balance as a model reads it: the numbers, the scale they are read against, what in the
-    system can change them and whether that explains the change."""
-    numbers = (f"energy (kinetic + spring + gravity/constant-force potential; contact, constraint and drive forces "
-               f"not counted): {report['start']:.6g} J at t = 0, {report['end']:.6g} J at the end: a change of "
-               f"{report['change']:.4g} J")
-    if "motion_energy" in report:
-        numbers += (f", {100 * report['relative_change']:.3g} % of the motion's energy, its largest kinetic energy "
-                    f"{report['motion_energy']:.4g} J (at t = {report['motion_energy_time']:.4g} s; the total's own "
-                    "size depends on where gravity's potential is zero and says nothing)")
-    else:
-        numbers += f" ({100 * report['relative_change']:.3g} % of the total: no body moves)"
-    lines = [numbers]
-    elements = report["dissipate"] + report["feed"]
-    lines.append("what dissipates or feeds energy: " + ("; ".join(elements) if elements else
-                                                        "nothing (no damper, lossy contact, drive or working load)"))
-    if report["explained"] is None:
-        lines.append(f"so: the energy is kept (within {100 * KEPT:g} % of the motion's energy)")
-    elif report["explained"]:
-        lines.append("so: a " + ("loss" if report["change"] < 0 else "gain") + " the elements above can explain")
-    else:
-        lines.append("so: a " + ("loss" if report["change"] < 0 else "gain") + " no element of the system explains: "
-                     "check the initial velocities against the constraints, the loads and the units")
-    return lines
+def gravity_potential(motion: dict[str, Any] | None, items: dict[str, list[dict[str, Any]]] | None
+                      ) -> np.ndarray | None:
+    """Gravity's potential -Σ m g·p of the bodies' centres of mass at the motion record's samples,
+    from the program's constant mass-proportional loads; None without any."""
+    bodies = {b.index: b for b in read_bodies(motion) or []}
+    if not bodies or items is None:
+        return None
+    markers = items.get("markers", [])
+    n = min(len(b.t) for b in bodies.values())
+    total, found = np.zeros(n), False
+    for load in items.get("loads", []):
+        marker = load.get("markerNumber")
+        if load.get("loadType") != "MassProportional" or load.get("loadVectorUserFunction", 0) not in (0, None):
+            continue
+        body = markers[int(marker)].get("bodyNumber") if isinstance(marker, int) and 0 <= marker < len(markers) \
+            else None
+        vector = np.asarray(load.get("loadVector") or (0.0, 0.0, 0.0), dtype=float).ravel()
+        if body is None or int(body) not in bodies or vector.size != 3:
+            continue
+        b = bodies[int(body)]
+        total -= b.mass * (b.p[:n] @ vector)
+        found = True
+    return total if found else None

@@ -17,8 +17,9 @@ from typing import Any
 
 import numpy as np
 
+from meceng.agents.balance import energy_balance, energy_words
 from meceng.agents.compare import compare_programs
-from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, energy_balance, energy_words, parse_energy
+from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.prompts import neutral
 from meceng.agents.tool_schemas import FREQUENCIES_NOTE, MESH_PART_SCHEMA, PART_SNAPSHOT_SCHEMA, TOOL_SCHEMAS
 from meceng.catalog.component import Catalog
@@ -235,7 +236,7 @@ class Toolbox:
 def self_check_words(report: dict[str, Any]) -> str:
     """The self-check in words, like the other tools' answers: stage, degrees of freedom, each
     finding on its own line, the energy balance against the motion's own energy with what in the
-    system dissipates or feeds energy (``energy.energy_words``)."""
+    system dissipates or feeds energy (``balance.energy_words``)."""
     lines = [f"stage: {report['stage']}; degrees of freedom {report.get('degrees_of_freedom')}", "findings:"]
     lines += [f"  - {finding}" for finding in report["findings"]]
     energy = report.get("energy")
