@@ -162,7 +162,8 @@ def cmd_drafts(args: argparse.Namespace) -> int:
     for g in graded:
         verdict = (f"fails at {g.first_failure}" + (f" ({', '.join(g.categories)})" if g.categories else "")
                    if g.fails else "passes (not used)")
-        agree = "" if not g.fails else "  label = grader" if g.agrees else "  LABEL ≠ GRADER"
+        agree = ("" if not g.fails or g.agrees is None  # None: graded by behaviour, no category to agree with
+                 else "  label = grader" if g.agrees else "  LABEL ≠ GRADER")
         print(f"- {g.draft.id:<18} [{g.draft.label}] line {g.draft.line}: {g.draft.fault}\n"
               f"  {verdict}{agree}")
     return 0

@@ -89,7 +89,15 @@ def repair_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
         by_label[r["repair"]["label"]][1] += 1
     return {"tasks": len(drafts), "repaired": sum(1 for r in drafts if r["repair"]["repaired"]),
             "tools": bool(drafts[0]["repair"]["tools"]), "by_label": dict(sorted(by_label.items())),
-            "grader_agrees_with_label": sum(1 for r in drafts if (r["repair"].get("graded") or {}).get("agrees"))}
+            "grader_agrees_with_label": _agreeing(drafts)}
+
+
+def _agreeing(drafts: list[dict[str, Any]]) -> int | None:
+    """Drafts whose grader names the fault's label; None where none was graded by a verdict that
+    names categories (an open text's behaviour verdict)."""
+    said = [(r["repair"].get("graded") or {}).get("agrees") for r in drafts]
+    known = [a for a in said if a is not None]
+    return sum(1 for a in known if a) if known else None
 
 
 def behaviour_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
