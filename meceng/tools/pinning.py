@@ -2,23 +2,27 @@
 follows the program, not the launcher that started it (issue 45).
 
 Measured on the corpus's flexible pendulum on a wrong hinge axis (a Newton solve on the edge of
-convergence, whose adaptive step count follows the last bits of its inputs):
+convergence, whose adaptive step count follows the last bits of its inputs), on 2 cores:
 
-* The thread count of the numerical libraries. NumPy's OpenBLAS with two threads and with one
-  thread sums in different orders; the program then took 14,271 steps (22 s of CPU) or 42,101
-  steps (55 s). OpenBLAS, OpenMP and NGSolve read their counts from the environment when they
-  load, so the counts must be in the environment of the process that imports them: the cold
-  child's, and the fork server's for every warm child.
 * ARPACK's start vector. SciPy's ``eigsh`` (Exudyn's Hurty-Craig-Bampton and eigenmode
-  computations) starts from a vector drawn from OS entropy when none is given, so every making
-  of the same part gives another, equally valid mode basis, and an assembly graded on it took
-  21,010 or 42,102 steps depending on which part file the launcher had just made. Pinned here
-  to a fixed seed per call (``pin_eigensolvers``).
+  computations) draws it from OS entropy when none is given, so every making of the same part
+  (the same mesh and matrices) gave another, equally valid mode basis, and every launcher makes
+  an assembly's parts itself: on three makings the program took 18,957 steps (27 s of CPU) and
+  twice stopped after 12 and 16 steps (0.5 s). Pinned to a fixed seed per call
+  (``pin_eigensolvers``): every making gives the same bytes, and the program stops after 12 steps
+  in 0.2-0.6 s of CPU in every launcher (scripts/bench_cpu_time.py).
+* The thread count of the numerical libraries. On one part file, NumPy's OpenBLAS with two
+  threads and with one summed in other orders: 14,271 steps (22 s of CPU) against 42,101 steps
+  (55 s). OpenBLAS, OpenMP and NGSolve read their counts from the environment as they load, so
+  the counts must be in the environment of the process that imports them: the cold child's, and
+  the fork server's for every warm child (whatever environment the pool was given).
 * Python's string hashing (``PYTHONHASHSEED``): a program that builds its system by iterating
-  a set of names otherwise builds it in another order in every process.
+  a set of names would otherwise build it in another order in every process.
 
 CPU affinity is not pinned: with one thread per library, a child's CPU time does not depend on
-how many cores it may use (only its wall time does).
+how many cores it may use, only its wall time does (a level-1 program with 0.7 s of extra Python:
+0.93-0.99 s of CPU on every core, on one core, and on one core shared with four busy loops, while
+the wall clock read 3.3-5.8 s on a loaded machine).
 """
 
 from __future__ import annotations
