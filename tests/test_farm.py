@@ -97,7 +97,7 @@ async def test_runs_on_their_own_servers_overlap_and_a_shared_server_keeps_its_s
 def comparable(run_json: Path) -> dict[str, Any]:
     run = json.loads(run_json.read_text())
     return normalized({"tasks": run["tasks"], "summary": {k: v for k, v in run["summary"].items() if k != "timing"}},
-                      (*("time", "timing", "duration", "started", "stderr_tail", "endpoint"), "wall"))
+                      (*("time", "timing", "duration", "started", "stderr_tail", "endpoint"), "wall", "cpu_s"))
 
 
 async def test_verdicts_equal_with_and_without_store_and_concurrency(tmp_path: Path) -> None:

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from meceng.eval.categories import CATEGORIES
+from meceng.eval.limits import execution_limits
 
 
 def _percentile(values: Sequence[float], q: float) -> float | None:
@@ -167,6 +168,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
         "agent": agent_summary(records),
         "repair": repair_summary(records),
         "behaviour": behaviour_summary(records),
+        "limits": execution_limits(records),  # executions that reached the CPU limit / the wall-clock bound
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

@@ -104,7 +104,7 @@ class SweepSpec:
     studies: tuple[Study, ...]
     out: Path = Path("runs")
     workers: int | None = None
-    exec_timeout_s: float = 60.0
+    exec_timeout_s: float = 60.0  # CPU seconds per program (RunSettings.exec_timeout_s)
     description: str = ""
     extra: dict[str, Any] = field(default_factory=dict)
 
