@@ -57,8 +57,9 @@ TASK = DesignModel(
         "E = [xC0 + {spring_length}, 0, 0], xC0 being the slider centre's x-coordinate at the start: "
         "the spring has stiffness k = {slider_stiffness} N/m and is relaxed at the start (its "
         "unstretched length is {spring_length} m), the damper in parallel has the viscous damping "
-        "coefficient c = {slider_damping} N*s/m (force -c times the slider's velocity). There is no "
-        "other friction or damping."),
+        "coefficient c = {slider_damping} N*s/m (force -c times the slider's velocity). E lies farther "
+        "right than the slider ever gets, so spring and damper act along x. There is no other friction or "
+        "damping."),
     params=(
         Param("density", 2000.0, 4000.0, "kg/m^3"),
         Param("crank_length", 0.1, 0.2, "m"),
@@ -68,12 +69,12 @@ TASK = DesignModel(
         Param("crank_angle_deg", 0.0, 350.0, "deg"),
         Param("load_ratio", 0.5, 0.8, ""),  # the spring's peak torque 2 k r^2 over the lowest torque
         Param("slider_damping", 3.0, 6.0, "N*s/m"),
-        Param("spring_length", 0.2, 0.3, "m"),
+        # longer than the slider's whole stroke 2 r: the slider never reaches E, so the spring acts along x
+        Param("spring_length", 0.45, 0.6, "m"),
         Param("gravity", 9.78, 9.83, "m/s^2", digits=4),
     ),
     model_code=SLIDER_CRANK.model_code + """
-        oAnchor = mbs.CreateGround(referencePosition=[xC + spring_length, 0, 0])
-        mbs.CreateSpringDamper(bodyNumbers=[oSlider, oAnchor], localPosition0=[0, 0, 0],
+        mbs.CreateSpringDamper(itemNumbers=[oGround, oSlider], localPosition0=[xC + spring_length, 0, 0],
                                localPosition1=[0, 0, 0], referenceLength=spring_length,
                                stiffness=slider_stiffness, damping=slider_damping)
     """,
