@@ -146,10 +146,10 @@ def _programs_rate(instances: list[Any], processes: int) -> float:
     no harness around it (no event loop, no grading, no fork server protocol)."""
     import multiprocessing as mp
 
-    from meceng.tools.executor import _write_job
+    from meceng.tools.executor import _write_job, rlimits_of
 
     limits = ExecutionLimits()
-    rlimits = {"memory": limits.memory_bytes, "cpu": int(limits.timeout_s) + 5, "file": limits.file_bytes}
+    rlimits = rlimits_of(limits)
     with tempfile.TemporaryDirectory() as root:
         jobs = []
         for k, instance in enumerate(instances):

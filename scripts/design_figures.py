@@ -4,6 +4,7 @@ fraction of the allowed range) and the verdict of the engineer's closed-form est
     python scripts/design_figures.py                         # every level-4 model, seeds 0-4
     python scripts/design_figures.py crank_first_revolution --seeds 10
     python scripts/design_figures.py --write                 # keep them in tasks/design/figures.json
+    python scripts/design_figures.py --markdown              # the kept figures as docs/design.md's table
 
 The figures are what ``meceng tasks show`` and docs/design.md show; each takes ~10-60 s a model
 (one reference run per design tried, in this process).
@@ -29,9 +30,13 @@ def main() -> int:
     parser.add_argument("slugs", nargs="*", help="design task models (default: all of level 4)")
     parser.add_argument("--seeds", type=int, default=5, help="instances per model: seeds 0..N-1")
     parser.add_argument("--write", action="store_true", help=f"merge the figures into {FIGURES.name}")
+    parser.add_argument("--markdown", action="store_true", help=f"print {FIGURES.name} as a table, run nothing")
     args = parser.parse_args()
     registry = default_registry()
     models = [registry.get(s) for s in args.slugs] if args.slugs else registry.select(levels=["4"])
+    if args.markdown:
+        print(markdown(models, json.loads(FIGURES.read_text()) if FIGURES.exists() else {}))
+        return 0
     figures: dict = {}
     for model in models:
         t0 = time.perf_counter()
@@ -63,6 +68,21 @@ def main() -> int:
             FIGURES.write_text(json.dumps(dict(sorted(kept.items())), indent=1) + "\n")
         print(f"written: {FIGURES}")
     return 0
+
+
+def markdown(models: list, figures: dict) -> str:
+    rows = ["| id | design task | system | open value(s) | quantity | band (% of the range) | estimate passes |",
+            "|---:|---|---|---|---|---|---|"]
+    for model in models:
+        fig = figures.get(model.slug)
+        band = (f"{fig['band_percent']['median']} ({fig['band_percent']['min']}–{fig['band_percent']['max']})"
+                if fig else "not measured")
+        passes = (f"{fig['estimate']['passed']}/{fig['estimate']['of']} "
+                  f"({fig['estimate']['median_error_in_tolerances']} tol. off)" if fig else "–")
+        values = ", ".join(f"{v.name} [{v.low:g}, {v.high:g}] {v.unit}".rstrip() for v in model.variables)
+        rows.append(f"| {model.id} | `{model.slug}` | `{model.system.slug}` | {values} | {model.spec.kind} | "
+                    f"{band} | {passes} |")
+    return "\n".join(rows)
 
 
 if __name__ == "__main__":

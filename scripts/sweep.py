@@ -197,8 +197,9 @@ def print_plan(spec: SweepSpec, planned: list[PlannedRun], console: Console) -> 
                     str(len(points)), f"{sum(point_workload(p)[0] for p in points):,}",
                     f"{sum(point_workload(p)[1] for p in points):,}")
     console.print(summary)
-    console.print("LLM requests are an upper bound: two per task (selection, program); an assembly's own "
-                  "two only when all its parts pass.")
+    console.print("LLM requests are an upper bound: two per task (selection, program), 2K for a consensus of K "
+                  "samples, a selection and up to the agent's rounds for the tool-calling loop, one per repair "
+                  "draft (up to the rounds with tools); an assembly's own only when all its parts pass.")
 
 
 def sweep_jobs(points: list[GridPoint], spec: SweepSpec, args: argparse.Namespace, workers: int) -> list[SweepJob]:

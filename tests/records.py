@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-VOLATILE = ("time", "timing", "duration", "started", "stderr_tail", "endpoint")
+VOLATILE = ("time", "timing", "duration", "started", "stderr_tail", "endpoint", "cpu_s", "wall_s")
 
 
 def normalized(value: Any, volatile: tuple[str, ...] = VOLATILE) -> Any:

@@ -152,7 +152,10 @@ def test_tasks_show_json_carries_the_design_block() -> None:
     done = subprocess.run([sys.executable, "-m", "meceng", "tasks", "show", GOLD, "--seed", "0", "--json"],
                           capture_output=True, text=True, timeout=300)
     design = json.loads(done.stdout)["design"]
-    assert design["variables"] == {"torque": [1.0, 4.0]} and design["system"] == "slider_crank_rigid_bodies"
+    model = default_registry().get(GOLD)
+    assert design["variables"] == {v.name: [v.low, v.high] for v in model.variables} == {"torque": design[
+        "variables"]["torque"]}
+    assert design["system"] == "slider_crank_rigid_bodies"
     assert design["spec"]["kind"] == "event_time" and design["spec"]["relative_tolerance"] == 0.01
     assert design["estimate"]["passed"] is False and design["estimate"]["error_in_tolerances"] > 1
 

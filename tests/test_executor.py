@@ -164,8 +164,8 @@ def test_reading_a_trajectory_waits_for_the_parse_lock(tmp_path: Path) -> None:
     np.save(tmp_path / f"trajectory-{token}.npy", np.zeros((3, 2)))
     done = threading.Event()
     with syntax.parsing():
-        reader = threading.Thread(target=lambda: (_collect(tmp_path, 0, False, b"", b"", 0.0, ExecutionLimits(),
-                                                           token), done.set()))
+        reader = threading.Thread(target=lambda: (_collect(tmp_path, 0, False, b"", b"", 0.0, None,
+                                                           ExecutionLimits(), token), done.set()))
         reader.start()
         assert not done.wait(0.3)
     reader.join(10)

@@ -97,7 +97,7 @@ async def test_runs_on_their_own_servers_overlap_and_a_shared_server_keeps_its_s
 def comparable(run_json: Path) -> dict[str, Any]:
     run = json.loads(run_json.read_text())
     return normalized({"tasks": run["tasks"], "summary": {k: v for k, v in run["summary"].items() if k != "timing"}},
-                      (*("time", "timing", "duration", "started", "stderr_tail", "endpoint"), "wall"))
+                      (*("time", "timing", "duration", "started", "stderr_tail", "endpoint"), "wall", "cpu_s"))
 
 
 async def test_verdicts_equal_with_and_without_store_and_concurrency(tmp_path: Path) -> None:
@@ -154,3 +154,35 @@ def test_a_killed_or_interrupted_sweep_resumes_every_run(tmp_path: Path) -> None
         assert comparable(out / name / "run.json") == comparable(tmp_path / "straight" / name / "run.json")
         assert not (out / name / ".lock").exists()
     assert lines(out) == lines(tmp_path / "straight")  # no finished task was done again
+
+
+def across(name: str, members: tuple[tuple[str, str], ...], out: Path = Path("runs"), **changes: Any) -> SweepJob:
+    """A consensus run across models: sample k by members[k mod M], each (model, host) its own server."""
+    models = tuple(LLMSettings(model=m, backend="ollama", hosts=(h,), batch_size=1) for m, h in members)
+    settings = RunSettings(llm=models[0], only=ONLY, variations=1, out=out, run_name=name, workers=2,
+                           progress=False, agent="consensus", samples=2, consensus_models=models, **changes)
+    return SweepJob(name, models[0].model, settings, 2)
+
+
+def test_a_consensus_run_across_models_is_grouped_by_every_models_servers() -> None:
+    """Its second model's server is a server it uses: a run on that server is in its group, and a run
+    of either of its models waits for it (no model swaps on a server it shares)."""
+    jobs = [across("m1-m2", (("m1", "http://a"), ("m2", "http://b"))), job("m2-b", "m2", ("http://b",)),
+            job("m3-c", "m3", ("http://c",))]
+    groups = sorted([j.name for j in g] for g in server_groups(jobs))
+    assert groups == [["m1-m2", "m2-b"], ["m3-c"]], groups
+    assert jobs[0].hosts == ("http://a", "http://b") and jobs[0].models == ("m1", "m2")
+
+
+async def test_a_consensus_run_across_models_keeps_every_servers_slots(tmp_path: Path) -> None:
+    """The run's requests to its second model's server share that server's slots with the sweep's
+    other runs there: never more in flight than its slots, and the other model's run waits."""
+    events: list[tuple[str, str, int]] = []
+    responder = gold_responder(events, 0.05)
+    async with FakeOllama(responder) as a, FakeOllama(responder) as b:
+        jobs = [across("m1-m2", (("m1", a.url), ("m2", b.url)), tmp_path), job("m3-b", "m3", (b.url,), tmp_path)]
+        results = await run_sweep(jobs, workers=2, display=False)
+    assert all("error" not in r for r in results), results
+    assert {model for model, _, _ in events} == {"m1", "m2", "m3"}
+    assert b.max_in_flight == 1, b.max_in_flight  # batch_size 1 on b, shared by both runs
+    assert not overlapping(events, "m2", "m3") and not overlapping(events, "m3", "m2")

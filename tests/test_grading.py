@@ -25,7 +25,7 @@ async def test_pool_and_threads_grade_alike(tmp_path: Path) -> None:
     for folder, pool in (("gold", True), ("again", False)):
         tasks = json.loads((await rescore(tmp_path / folder, workers=2, grading_pool=pool)).read_text())["tasks"]
         graded[pool] = normalized([{k: v for k, v in t.items() if k != "files"} for t in tasks],
-                                  ("time", "timing", "duration", "started", "stderr_tail", "wall"))
+                                  ("time", "timing", "duration", "started", "stderr_tail", "wall", "cpu_s"))
     assert graded[True] == graded[False]
     assert [t["overall"] for t in json.loads(run_json.read_text())["tasks"]] == [True, True, True]
 

@@ -182,7 +182,7 @@ async def test_bad_tool_arguments_are_answered_not_raised() -> None:
     answer = (await toolbox.call("snapshot", {"code": instance.reference_program, "time": [1, 2]})).text
     assert "picture in words" in answer  # a list of times: the first inside the run is taken
     broken = (await toolbox.call("simulate", {"code": "import exudyn as exu\nraise ValueError('no')"})).text
-    assert json.loads(broken)["stage"] == "started" and "ValueError" in json.loads(broken)["error"]
+    assert broken.startswith("stage: started; error: ") and "ValueError" in broken
 
 
 async def test_the_part_snapshot_shows_the_agents_part_and_its_interfaces() -> None:

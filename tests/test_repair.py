@@ -75,13 +75,14 @@ def _responder(known: dict, behaviour: str):
     return answer
 
 
-async def _repair_run(tmp_path: Path, behaviour: str, tools: bool) -> dict:
-    known = {m.instance(0).description: m.instance(0) for m in (default_registry().get(s) for s in TASKS)}
+async def _repair_run(tmp_path: Path, behaviour: str, tools: bool, texts: str = "paper") -> dict:
+    known = {m.instance(0, texts=texts).description: m.instance(0, texts=texts)
+             for m in (default_registry().get(s) for s in TASKS)}
     async with FakeOllama(_responder(known, behaviour)) as server:
         llm = LLMSettings(model="scripted", backend="ollama", hosts=(server.url,))
         settings = RunSettings(llm=llm, levels=("1", "2"), only=TASKS, variations=1, out=tmp_path,
-                               run_name=f"{behaviour}-{tools}", progress=False, agent="repair", repair_tools=tools,
-                               drafts_per_task=3, max_rounds=4)
+                               run_name=f"{behaviour}-{tools}-{texts}", progress=False, agent="repair",
+                               repair_tools=tools, drafts_per_task=3, max_rounds=4, texts=texts)
         return json.loads((await run_benchmark(settings)).read_text())
 
 
@@ -107,6 +108,25 @@ async def test_the_inspector_guided_model_repairs_what_the_inspector_shows(tmp_p
     for task in with_tools["tasks"]:
         assert task["agent"]["tool_calls"] == {"simulate": 2}
         assert task["repair"]["repaired"] == task["overall"]
+
+
+async def test_a_repair_run_on_open_texts(tmp_path: Path) -> None:
+    """``--agent repair --texts open``: the question is the open text (the scripted model finds its
+    instance by it), the drafts are graded by behaviour (a fault only in the writing moves alike and
+    is no task), and the bounds hold: the ground truth repairs every draft, the draft itself none."""
+    for behaviour, expected in (("reference", 1.0), ("unchanged", 0.0)):
+        run = await _repair_run(tmp_path, behaviour, False, texts="open")
+        repair = run["summary"]["repair"]
+        assert run["texts"] == "open" and repair["tasks"] == len(run["tasks"]) >= 4, repair
+        assert repair["repaired"] / repair["tasks"] == expected
+        # the behaviour verdict names no category: whether the grader agrees with a label is not known,
+        # and is not counted as a disagreement
+        assert repair["grader_agrees_with_label"] is None, repair
+        for task in run["tasks"]:
+            assert task["texts"] == "open" and task["repair"]["graded"]["agrees"] is None, task["repair"]
+            assert "behaviour_match" in {stage["name"] for stage in task["stages"]}, task["stages"]
+            if behaviour == "unchanged":
+                assert task["first_failure"] == "behaviour_match", task["first_failure"]
 
 
 async def test_a_repair_run_resumes_by_draft(tmp_path: Path) -> None:

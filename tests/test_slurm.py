@@ -108,7 +108,7 @@ def slurm(tmp_path: Path) -> Iterator[dict[str, str]]:
 def comparable(run_json: Path) -> object:
     run = json.loads(run_json.read_text())
     return normalized({"tasks": run["tasks"], "summary": {k: v for k, v in run["summary"].items() if k != "timing"}},
-                      ("time", "timing", "duration", "started", "stderr_tail", "endpoint", "wall"))
+                      ("time", "timing", "duration", "started", "stderr_tail", "endpoint", "wall", "cpu_s"))
 
 
 def test_a_gold_sweep_as_a_three_task_array_equals_one_process(tmp_path: Path, slurm: dict[str, str]) -> None:

@@ -194,3 +194,26 @@ def test_a_scripted_model_in_a_sweep_answers_in_process_like_gold() -> None:
     points = [GridPoint(ModelSpec(name=name, backend="ollama"), 0.0, False, "CI1", "MBS1")
               for name in ("scripted:p=0.5", "scripted-same:p=0.3", "gold", "qwen3:8b")]
     assert [p.llm().backend for p in points] == ["scripted", "scripted", "gold", "ollama"]
+
+
+def test_the_dry_run_counts_each_agents_requests() -> None:
+    """Two requests a task for the paper's pipeline; a consensus of K samples makes 2K (each sample
+    selects and writes), across models too; a repair draft one (the draft chose its components),
+    up to the agent's rounds with tools; the loop a selection and up to its rounds (issue 44)."""
+    from dataclasses import replace
+
+    from meceng.pipeline import RunSettings
+
+    base = GridPoint(ModelSpec(name="qwen3:8b"), 0.0, False, "CI1", "MBS1", levels=("1",), only=("single_pendulum",),
+                     variations=3)
+    tasks, requests = point_workload(base)
+    assert (tasks, requests) == (3, 6)
+    consensus = replace(base, agent="consensus", samples=4)
+    assert point_workload(consensus) == (3, 2 * 4 * 3)
+    across = replace(consensus, members=(consensus, replace(consensus, model=ModelSpec(name="gemma3:4b"))))
+    assert point_workload(across) == (3, 2 * 4 * 3)
+    rounds = RunSettings().max_rounds
+    assert point_workload(replace(base, agent="loop")) == (3, 3 * (1 + rounds))
+    repair = replace(base, agent="repair", drafts_per_task=2, repair_tools=False)
+    assert point_workload(repair) == (6, 6)  # at most: only the drafts that fail are tasks
+    assert point_workload(replace(repair, repair_tools=True)) == (6, 6 * rounds)

@@ -16,6 +16,7 @@ from collections.abc import Awaitable, Callable
 
 import numpy as np
 
+from meceng.agents.sources import scale_words
 from meceng.eval.agreement import Agreement, compare_motions
 from meceng.eval.behaviour import Deviation
 from meceng.eval.bodies import read_bodies
@@ -140,7 +141,7 @@ def compare_words(agreement: Agreement, a: Execution, b: Execution,
     if largest is not None:
         lines.append(f"largest deviation: {_deviation(largest, names)} ({num(largest.ratio)} of it) at "
                      f"t = {num(largest.time)} s")
-    lines.append(_tolerances(agreement, refined))
+    lines.append(_tolerances(agreement, names, refined))
     lines.append(NOTE)
     return "\n".join(lines)
 
@@ -167,16 +168,13 @@ def _head(agreement: Agreement, names: tuple[_Names, _Names]) -> str:
             else f"compare: A and B {parted}")
 
 
-def _tolerances(agreement: Agreement, refined: bool) -> str:
+def _tolerances(agreement: Agreement, names: tuple[_Names, _Names], refined: bool) -> str:
     scale, verdict = agreement.scales, agreement.verdict
     if scale is None or verdict is None:
         return ""
-    r = verdict.relative
-    text = (f"tolerances: {num(100 * r)} % of the smaller of the two motions' scales: positions "
-            f"{num(r * scale.travel)} m (of the farthest a centre of mass travels, {num(scale.travel)} m), velocities "
-            f"{num(r * scale.speed)} m/s (of the range of the centres of mass' speeds, {num(scale.speed)} m/s), "
-            "angular velocities and axes by what moves a point at the body's inertia radius as much (angular "
-            f"velocities: {num(100 * r)} % of the largest rim speed, {num(scale.turning)} m/s)")
+    sides = {"A": list(names[0].bodies.values()), "B": list(names[1].bodies.values())}
+    text = (f"tolerances, {num(100 * verdict.relative)} % of the smaller of the two motions' scales: "
+            + scale_words(verdict.relative, scale, sides, lambda side, index: names[side == "B"].label(index)))
     if refined:
         widened = "; ".join(verdict.widened) or "none"
         text += f"; both run again with twice the steps: widened by a program's own step error: {widened}"

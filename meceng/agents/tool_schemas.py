@@ -52,7 +52,8 @@ TOOL_SCHEMAS: tuple[dict[str, Any], ...] = (
         "name": "self_check",
         "description": ("Check a program for problems that need no reference solution: errors, redundant "
                         "constraints, nodes starting at the same place, non-finite or exploding coordinates. "
-                        "Answers in words: the degrees of freedom, the findings one a line, the energy balance."),
+                        "Answers in words: the degrees of freedom, the findings one a line, the energy balance "
+                        "against the motion's own energy and what in the system dissipates or feeds energy."),
         "parameters": {"type": "object", "properties": {"code": _CODE}, "required": ["code"]},
     },
     {

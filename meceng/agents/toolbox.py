@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from meceng.agents.balance import energy_balance, energy_words
 from meceng.agents.compare import compare_programs
 from meceng.agents.energy import ENERGY_CODE, ENERGY_MARK, parse_energy
 from meceng.agents.prompts import neutral
@@ -31,7 +32,7 @@ from meceng.tasks.base import SimSettings, TaskInstance
 from meceng.tools.execution import Execution, ExecutionLimits
 from meceng.tools.executor import execute
 from meceng.tools.meshcheck import check_mesh_size
-from meceng.tools.recording import REFINE, run_recorded
+from meceng.tools.recording import REFINE, recording, run_recorded
 from meceng.tools.warm import WarmPool
 
 MAX_TEXT = 1500
@@ -139,7 +140,7 @@ class Toolbox:
         return _rounded(report)
 
     async def _run(self, code: str, energy: bool = False, inspect_times: tuple[float, ...] | None = None,
-                   sensors: bool = False) -> Execution:
+                   sensors: bool = False, motion: bool = False) -> Execution:
         # only the time span of the description; none of the ground truth's solver extras, except for a
         # design task, whose text names them (they change the values its spec is on)
         sim = self.instance.sim
@@ -158,6 +159,8 @@ class Toolbox:
                   else replace(self.limits, inspect_times=inspect_times, inspect_loads=True))
         if sensors:
             limits = replace(limits, sensor_rows=SENSOR_ROWS)
+        if motion:  # the bodies' motion on the common grid (``self_check``: the largest kinetic energy)
+            limits = recording(limits, sim.end_time)
         return await execute(code, block, limits, pool=self.pool, files=self.files)
 
     async def _recorded(self, code: str, finer: bool = False) -> Execution:
@@ -180,7 +183,7 @@ class Toolbox:
         end = self._end_time()
         run = await self._run(code, inspect_times=_clip(times, end) or (end / 2, end), sensors=True)
         if run.items is None:
-            return json.dumps({"stage": run.stage, "error": _trim(run.error)})
+            return _no_system(run)
         view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
         text = render(view, run.stage, _trim(run.error, 600), ask or Ask(), end_time=end)
         return text + "\n\n" + sensor_words(run.sensors, window, samples, end)
@@ -199,7 +202,7 @@ class Toolbox:
             at = _clip(_times(time), end)[:1] or (end,)
             run = await self._run(code, inspect_times=at)
             if run.items is None:
-                return ToolResult(json.dumps({"stage": run.stage, "error": _trim(run.error)}))
+                return ToolResult(_no_system(run))
             view = build_view(run.items, run.system, run.inspection, run.trajectory, run.times)
             png = pictures.draw(view, (0.0, at[0]), f"the program's system (stage {run.stage})")
             text = pictures.describe(view, (0.0, at[0]))
@@ -213,7 +216,7 @@ class Toolbox:
         return ToolResult("the picture in words (this model takes no images):\n" + text)
 
     async def self_check(self, code: str) -> dict[str, Any]:
-        run = await self._run(code, energy=True)
+        run = await self._run(code, energy=True, motion=True)
         findings: list[str] = []
         energy = parse_energy(run.stdout_tail)
         if run.error:
@@ -233,24 +236,33 @@ class Toolbox:
         report: dict[str, Any] = {"stage": run.stage, "degrees_of_freedom": run.system.get("degreeOfFreedom"),
                                    "findings": findings or ["no problem found"]}
         if energy is not None:
-            start, end = energy
-            scale = max(abs(start), abs(end), 1e-12)
-            report["energy"] = {"start": start, "end": end, "relative_change": (end - start) / scale,
-                                "note": ("kinetic + spring + gravity/constant-force potential; a system without "
-                                         "damping, contact losses or driving loads should keep it nearly constant")}
+            view = build_view(run.items, run.system, None) if run.items is not None else None
+            balance = energy_balance(*energy, run.motion, view, run.items)
+            report["energy"] = balance
+            if balance["explained"] is False:
+                findings.append(f"the energy changes by {100 * balance['relative_change']:.3g} % of the motion's "
+                                "energy and no element of the system explains it (see energy below)")
+                report["findings"] = findings
         return report
 
 
 def self_check_words(report: dict[str, Any]) -> str:
     """The self-check in words, like the other tools' answers: stage, degrees of freedom, each
-    finding on its own line, the energy balance with its relative change."""
+    finding on its own line, the energy balance against the motion's own energy with what in the
+    system dissipates or feeds energy (``balance.energy_words``)."""
     lines = [f"stage: {report['stage']}; degrees of freedom {report.get('degrees_of_freedom')}", "findings:"]
     lines += [f"  - {finding}" for finding in report["findings"]]
     energy = report.get("energy")
     if energy is not None:
-        lines.append(f"energy ({energy['note']}): {energy['start']:.6g} J at t = 0, {energy['end']:.6g} J at the "
-                     f"end, a relative change of {100 * energy['relative_change']:.3g} %")
+        lines += energy_words(energy)
     return "\n".join(lines)
+
+
+def _no_system(run: Execution) -> str:
+    """A program that stopped before ``Assemble``, in the words of every other answer (not JSON)."""
+    return (f"stage: {run.stage}; error: {_trim(run.error)}\n"
+            "no system to show: the program stopped before its system was assembled (mbs.Assemble()); "
+            "fix the error above and call again")
 
 
 def _trim(text: str | None, limit: int = MAX_TEXT) -> str | None:

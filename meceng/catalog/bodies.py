@@ -52,7 +52,8 @@ MASS_POINT = Component(
         - Returns the body's ObjectIndex for itemNumbers/itemNumber; its node is
           nMass = mbs.GetObject(oMass)['nodeNumber'] (needed for coordinate markers and node sensors).
         - A mass point has no orientation: no revolute/prismatic/generic joints and no torques on it
-          (use RigidBody for that).
+          (use RigidBody for that: mbs.CreateRigidBody(referencePosition=[x, y, z],
+          inertia=InertiaSphere(mass=m, radius=r), gravity=[0, -9.81, 0])).
     """),
     example=rigid_example("""
         # a mass point thrown from 2 m height under gravity in negative z-direction

@@ -16,10 +16,13 @@ REVOLUTE_JOINT = Component(
         - position: GLOBAL joint point, axis: GLOBAL rotation axis, both for the reference configuration
           (referencePosition/referenceRotationMatrix of the bodies); the joint point is usually not the
           center of mass (e.g. the upper end of a pendulum link).
-        - Only rigid bodies and ground; for a mass point on a massless rod use DistanceConstraint; a joint at a
-          flexible part's interface is an InterfaceJoint.
+        - Only rigid bodies and ground; for a mass point on a massless rod use DistanceConstraint
+          (mbs.CreateDistanceConstraint(itemNumbers=[oGround, oMass], distance=L)); a joint at a flexible
+          part's interface is an InterfaceJoint.
         - In 3D a closed loop of revolute joints (four-bar, slider-crank) is over-constrained: close the loop
-          with a SphericalJoint with constrainedAxes=[1, 1, 0] (planar x-y mechanism) instead.
+          with a SphericalJoint with constrainedAxes=[1, 1, 0] (planar x-y mechanism) instead of its last
+          revolute joint: mbs.CreateSphericalJoint(itemNumbers=[oCoupler, oRocker], position=[x, y, z],
+          constrainedAxes=[1, 1, 0]) (x and y locked, z free: the loop's out-of-plane direction).
     """),
     example=rigid_example("""
         # a physical pendulum: cuboid link hinged at its upper end [0, 0, 0], swinging in the x-y plane

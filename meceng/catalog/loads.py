@@ -220,9 +220,11 @@ JOINT_PD_CONTROL = Component(
         - The torsional spring-damper measures the joint angle itself: rotation [rad] is the rotation of
           itemNumbers[1] relative to itemNumbers[0] about the GLOBAL axis a (right-hand rule), zero in the reference
           configuration and counted over several turns; angularVelocity [rad/s] is its rate.
-        - The returned value replaces the connector torque k*(rotation - offset) + d*angularVelocity; it acts on
-          both items (drive and reaction), so the function above is the PD control torque
-          tau = kP*(qd - q) + kD*(vd - q') with the gains passed as stiffness and damping.
+        - The returned value replaces the connector torque k*(rotation - offset) + d*angularVelocity, which like
+          any spring's resists the rotation: itemNumbers[1] receives minus the returned value (itemNumbers[0] the
+          reaction, plus it). The function above returns kP*(q - qd) + kD*(q' - vd), q = rotation, with the
+          gains passed as stiffness and damping, so that itemNumbers[1] is driven by tau = kP*(qd - q) + kD*(vd - q'),
+          the PD control torque that pulls q towards qd.
         - The joint angle is measured from the reference configuration: build the bodies in the start pose and
           give qd relative to it (subtract the start angle if the trajectory is given in absolute angles).
         - Signature exactly (mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset) -> float;

@@ -23,8 +23,11 @@ SPRING_DAMPER = Component(
           initialDisplacement of CreateMassPoint.
         - localPosition0/1: attachment points in body-local coordinates (for a ground at [0, 0, 0] the global
           point; for a mass point keep [0, 0, 0]); itemNumbers may also be two bodies.
-        - For a spring acting on one coordinate only use CoordinateSpringDamper; for separate x, y, z stiffness
-          CartesianSpringDamper.
+        - For a spring acting on one coordinate only use CoordinateSpringDamper (on two MarkerNodeCoordinate
+          markers: mbs.AddObject(CoordinateSpringDamper(markerNumbers=[mGround, mMassX], stiffness=k,
+          damping=d))); for separate x, y, z stiffness use CartesianSpringDamper
+          (mbs.CreateCartesianSpringDamper(itemNumbers=[oGround, oMass], stiffness=[kx, ky, kz],
+          damping=[dx, dy, dz])).
     """),
     example=rigid_example("""
         # two masses in a chain: ground -- spring 1 -- mass 1 -- spring 2 -- mass 2, along x
@@ -78,7 +81,7 @@ TORSIONAL_SPRING_DAMPER = Component(
           [N*m*s/rad]; torque = k*(phi - offset) + d*dphi/dt, phi = relative rotation about the axis measured
           from the reference configuration (relaxed there for offset=0).
         - It constrains nothing: combine it with a RevoluteJoint at the same position and axis, which guides
-          the rotation.
+          the rotation: mbs.CreateRevoluteJoint(itemNumbers=[oGround, oBody], position=[x, y, z], axis=[0, 0, 1]).
         - Only rigid bodies and ground (no mass points).
     """),
     example=rigid_example("""

@@ -14,6 +14,7 @@ from typing import Any
 from meceng.agents.prompts import CODE_TEMPLATES, DEFAULT_CODE, DEFAULT_SELECT, SELECT_TEMPLATES
 from meceng.cli.arguments import (
     LEVELS,
+    TIMEOUT_HELP,
     add_run_arguments,
     add_texts_argument,
     parse_levels,
@@ -94,7 +95,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--code", type=Path, required=True, help="the Python program to grade")
     add_texts_argument(p)
     p.add_argument("--components", default=None, help="comma-separated chosen components (optional)")
-    p.add_argument("--timeout", type=float, default=60.0)
+    p.add_argument("--timeout", type=float, default=60.0, help=TIMEOUT_HELP)
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_evaluate)
 

@@ -103,6 +103,13 @@ def add_llm_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--llm-timeout", type=float, default=600.0, help="seconds per LLM request")
 
 
+#: what ``--timeout`` limits (issue 45): CPU time, so that a verdict does not follow the machine's load
+TIMEOUT_HELP = ("CPU seconds a program may use (default %(default)g): its own CPU time, all threads, enforced by "
+                "the kernel in whole seconds; reaching it is the program's timeout. The wall clock stops a run at "
+                "3x this plus 10 s; a run stopped there with CPU time to spare (a busy machine, a sleeping "
+                "program) is an infrastructure failure, not graded and done again by --resume")
+
+
 def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     add_llm_arguments(parser)
     parser.add_argument("--levels", type=parse_levels, default=("1", "2"), help="e.g. 1,2")
@@ -114,7 +121,7 @@ def add_run_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("runs"), help="directory for run folders")
     parser.add_argument("--name", default=None, help="run folder name (default: time stamp + model)")
     parser.add_argument("--workers", type=positive_int, default=None, help="parallel program executions")
-    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per program execution")
+    parser.add_argument("--timeout", type=float, default=60.0, help=TIMEOUT_HELP)
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="fork: warm fork server (default); subprocess: a cold interpreter per program")
     parser.add_argument("--agent", choices=("pipeline", "loop", "repair", "consensus"), default="pipeline",

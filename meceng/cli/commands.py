@@ -139,6 +139,9 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
             print(f"infrastructure error: {verdict.infrastructure_error}")
         if "design" in graded.facts:
             print(f"design: {graded.facts['design']['detail']}")
+        if candidate.cpu_time is not None:  # what the limit counts, beside what the clock saw
+            print(f"program time: {candidate.cpu_time:.1f} s CPU (limit {args.timeout:g} s), "
+                  f"{candidate.wall_time:.1f} s wall")
         if verdict.behaviour is not None and verdict.graded_by == "paper":
             # beside the paper's verdict; the exit status stays the paper's (an open text's is behaviour)
             mark = {True: "pass", False: "FAIL", None: " -- "}[verdict.behaviour["passed"]]
@@ -162,7 +165,8 @@ def cmd_drafts(args: argparse.Namespace) -> int:
     for g in graded:
         verdict = (f"fails at {g.first_failure}" + (f" ({', '.join(g.categories)})" if g.categories else "")
                    if g.fails else "passes (not used)")
-        agree = "" if not g.fails else "  label = grader" if g.agrees else "  LABEL ≠ GRADER"
+        agree = ("" if not g.fails or g.agrees is None  # None: graded by behaviour, no category to agree with
+                 else "  label = grader" if g.agrees else "  LABEL ≠ GRADER")
         print(f"- {g.draft.id:<18} [{g.draft.label}] line {g.draft.line}: {g.draft.fault}\n"
               f"  {verdict}{agree}")
     return 0
@@ -213,8 +217,14 @@ def print_summary(run_json: Path) -> None:
         print(f"level {level} ({block['counted']}): {line}"
               + (f"  [{lost_here} lost to the server]" if lost_here else "")
               + (f"  [{unfit_here} did not fit the server's context]" if unfit_here else ""))
+    limits = summary.get("limits")
+    if limits and (limits["cpu_limit"] or limits["wall_bound"]):
+        print(f"program executions: {limits['executions']}; {limits['cpu_limit']} reached the CPU limit (the "
+              f"programs' timeouts), {limits['wall_bound']} the wall-clock bound (the machine's, not graded)")
     behaviour = summary.get("behaviour")
-    if behaviour and behaviour.get("graded") and texts == "paper":  # an open text's overall is behaviour
+    # an open text's overall is behaviour, and so is a design task's (level 4): nothing to set beside it
+    paper_levels = [lv for lv in summary.get("levels", {}) if lv != "4"]
+    if behaviour and behaviour.get("graded") and texts == "paper" and paper_levels:
         differ = behaviour["paper_only"] + behaviour["behaviour_only"]
         print(f"behaviour (levels 1, 2, 3b): {behaviour['passed']}/{behaviour['graded']} passed "
               f"({100 * behaviour['rate']:.1f}%); the paper's verdict differs on {differ} "

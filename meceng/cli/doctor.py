@@ -22,7 +22,8 @@ def add_doctor_arguments(parser: argparse.ArgumentParser) -> None:
                         help="the levels to check the stack for (default: all; 1,2 needs Exudyn only)")
     parser.add_argument("--executor", choices=("fork", "subprocess"), default="fork",
                         help="the sandbox the runs will use (default: the warm fork server)")
-    parser.add_argument("--timeout", type=float, default=300.0, help="seconds per ground-truth execution")
+    parser.add_argument("--timeout", type=float, default=300.0,
+                        help="CPU seconds per ground-truth execution (the wall clock stops it at 3x this plus 10 s)")
 
 
 async def _checks(args: argparse.Namespace) -> list[tuple[str, bool | None, str]]:

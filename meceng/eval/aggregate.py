@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from meceng.eval.categories import CATEGORIES
+from meceng.eval.limits import execution_limits
 
 
 def _percentile(values: Sequence[float], q: float) -> float | None:
@@ -89,7 +90,15 @@ def repair_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
         by_label[r["repair"]["label"]][1] += 1
     return {"tasks": len(drafts), "repaired": sum(1 for r in drafts if r["repair"]["repaired"]),
             "tools": bool(drafts[0]["repair"]["tools"]), "by_label": dict(sorted(by_label.items())),
-            "grader_agrees_with_label": sum(1 for r in drafts if (r["repair"].get("graded") or {}).get("agrees"))}
+            "grader_agrees_with_label": _agreeing(drafts)}
+
+
+def _agreeing(drafts: list[dict[str, Any]]) -> int | None:
+    """Drafts whose grader names the fault's label; None where none was graded by a verdict that
+    names categories (an open text's behaviour verdict)."""
+    said = [(r["repair"].get("graded") or {}).get("agrees") for r in drafts]
+    known = [a for a in said if a is not None]
+    return sum(1 for a in known if a) if known else None
 
 
 def behaviour_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
@@ -159,6 +168,7 @@ def summarize(records: Iterable[dict[str, Any]]) -> dict[str, Any]:
         "agent": agent_summary(records),
         "repair": repair_summary(records),
         "behaviour": behaviour_summary(records),
+        "limits": execution_limits(records),  # executions that reached the CPU limit / the wall-clock bound
         "timing": {
             "task_wall_s": _stats([r["timing"]["total_s"] for r in records if "timing" in r]),
             "llm_s": _stats([r["timing"]["llm_s"] for r in records if "timing" in r]),

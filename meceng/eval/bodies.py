@@ -125,21 +125,66 @@ class Scales:
                 "rim_speed_m_s": self.turning, "duration_s": self.duration}
 
 
+@dataclass(frozen=True)
+class ScaleSource:
+    """One candidate for a scale: its value, what it measures and of which body (None: all of them).
+
+    A scale is the largest of its candidates; ``compare`` says which one it was, so the candidates
+    are listed here, once, for both."""
+
+    value: float
+    what: str  # "travel", "travel_floor", "velocity_spread", "mean_speed", "rim_speed"
+    body: int | None = None  # BodyMotion.index
+
+
+def _length(bodies: list[BodyMotion]) -> float:
+    positions = np.concatenate([b.p for b in bodies])
+    size = max(b.size for b in bodies)
+    return max(float(np.linalg.norm(np.ptp(positions, axis=0))) if len(positions) else 0.0, size, 1e-6)
+
+
+def _duration(bodies: list[BodyMotion]) -> float:
+    return max(float(bodies[0].t[-1] - bodies[0].t[0]) if len(bodies[0].t) > 1 else 1.0, 1e-9)
+
+
+def _path(b: BodyMotion) -> float:
+    return float(np.linalg.norm(np.ptp(b.p, axis=0))) if len(b.p) else 0.0
+
+
+def travel_sources(bodies: list[BodyMotion]) -> list[ScaleSource]:
+    """The position scale's candidates: each centre of mass's path (the box around it) and the floor."""
+    return ([ScaleSource(_path(b), "travel", b.index) for b in bodies]
+            + [ScaleSource(TRAVEL_FLOOR * _length(bodies), "travel_floor")])
+
+
+def speed_sources(bodies: list[BodyMotion]) -> list[ScaleSource]:
+    """The velocity scale's candidates: the spread of all centre-of-mass velocities and each centre's
+    travel over the run (a slow creep still has a scale)."""
+    velocities = np.concatenate([b.v for b in bodies])
+    spread = float(np.linalg.norm(np.ptp(velocities, axis=0))) if len(velocities) else 0.0
+    duration = _duration(bodies)
+    return ([ScaleSource(spread, "velocity_spread")]
+            + [ScaleSource(max(_path(b), TRAVEL_FLOOR * _length(bodies)) / duration, "mean_speed", b.index)
+               for b in bodies])
+
+
+def rim_sources(bodies: list[BodyMotion]) -> list[ScaleSource]:
+    """The rotations' candidates: each body's largest angular speed times its inertia radius."""
+    return [ScaleSource(float(np.max(np.linalg.norm(b.w, axis=1))) * b.size, "rim_speed", b.index)
+            for b in bodies if b.w is not None and len(b.w)]
+
+
+def largest(sources: list[ScaleSource]) -> ScaleSource:
+    return max(sources, key=lambda s: s.value)
+
+
 def scales(bodies: list[BodyMotion]) -> Scales:
     if not bodies:
         return Scales(1.0, 1.0, 1.0)
-    positions = np.concatenate([b.p for b in bodies])
-    velocities = np.concatenate([b.v for b in bodies])
-    size = max(b.size for b in bodies)
-    length = max(float(np.linalg.norm(np.ptp(positions, axis=0))) if len(positions) else 0.0, size, 1e-6)
-    travel = max(max(float(np.linalg.norm(np.ptp(b.p, axis=0))) if len(b.p) else 0.0 for b in bodies),
-                 TRAVEL_FLOOR * length)
-    duration = float(bodies[0].t[-1] - bodies[0].t[0]) if len(bodies[0].t) > 1 else 1.0
-    rim = max((float(np.max(np.linalg.norm(b.w, axis=1))) * b.size for b in bodies if b.w is not None and len(b.w)),
-              default=0.0)
-    swept = float(np.linalg.norm(np.ptp(velocities, axis=0))) if len(velocities) else 0.0
-    speed = max(swept, travel / max(duration, 1e-9))
-    return Scales(length, speed, max(duration, 1e-9), travel, max(rim, speed))
+    travel = largest(travel_sources(bodies)).value
+    speed = largest(speed_sources(bodies)).value
+    rim = max((s.value for s in rim_sources(bodies)), default=0.0)
+    return Scales(_length(bodies), speed, _duration(bodies), travel, max(rim, speed))
 
 
 def _common(a: BodyMotion, b: BodyMotion) -> int:

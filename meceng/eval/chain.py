@@ -141,6 +141,8 @@ def evaluate_rigid(
             stages=(),
             infrastructure_error=f"reference program failed: {reference.error or reference.stage}",
         )
+    if candidate.lost_to_machine:  # the wall clock stopped it with CPU time to spare: nothing to grade
+        return Verdict(stages=(), infrastructure_error=f"program not graded: {candidate.error}")
     stages: list[StageResult] = []
     if selected is None:
         stages.append(StageResult("choose_components", None, "not applicable: no component selection"))

@@ -160,6 +160,19 @@ def bodies_section(view: SystemView, shown: list[Body], ask: Ask) -> list[str]:
     return lines
 
 
+def time_label(view: SystemView, t: float) -> str:
+    """``t=0.5``: the time asked where the state's step says it to four digits; else the step's time
+    and why it is not the one asked (the solver's steps do not meet it)."""
+    k = view.times.index(t) if t in view.times else -1
+    asked = view.asked[k] if 0 <= k < len(view.asked) else ()
+    step = view.steps[k] if 0 <= k < len(view.steps) else None
+    other = [a for a in asked if num(a) != num(t)]
+    if not other:
+        return f"t={num(t)}"
+    there = f"; steps of {num(step)} s there" if step else ""
+    return (f"t={num(t)} (the solver step nearest to the asked t = {', '.join(num(a) for a in other)}{there})")
+
+
 def motion_section(view: SystemView, shown: list[Body], ask: Ask, end_time: float | None) -> list[str]:
     times = [t for t in view.times if t > 0]
     if not times:
@@ -168,17 +181,19 @@ def motion_section(view: SystemView, shown: list[Body], ask: Ask, end_time: floa
     per_time = len(singles) if ask.focused else max(1, MOTION_LINES // len(times))
     out = ["motion (sampled):"]
     for t in times:
+        label = time_label(view, t)
         for body in singles[:per_time]:
             state = body.state_at(t)
             if state is not None:
-                out.append(f"  t={num(state.t)} {body.label}: {state_text(view, body, state, ask.quantities)}")
-        out += [f"  t={num(t)} {family_line(members, t)}" for members in families]
+                out.append(f"  {label} {body.label}: {state_text(view, body, state, ask.quantities)}")
+        out += [f"  {label} {family_line(members, t)}" for members in families]
         if len(singles) > per_time:
             left = [b.index for b in singles[per_time:]]
             out.append(f"  … t={num(t)}: {len(left)} more bodies not shown here ({numbers(left)}): {HINT}; "
                        "times=[...] picks other times")
-    if end_time is not None and times[-1] < end_time * (1 - 1e-6):
-        out.append(f"  the run ended at t={num(times[-1])} before the end time {num(end_time)}")
+    reached = view.run_end if view.run_end is not None else times[-1]
+    if end_time is not None and reached < end_time * (1 - 1e-6):
+        out.append(f"  the run ended at t={num(reached)} before the end time {num(end_time)}")
     return out
 
 

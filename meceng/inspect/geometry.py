@@ -71,8 +71,20 @@ def sphere_triangle(item: dict[str, Any], centre: Any, triangle_origin: Any, tri
     centre = np.asarray(centre, dtype=float)[:3]
     radius = float(item.get("sphereRadius") or 0.0)
     side = float((centre - corners[0]) @ normal)
+    edges = item.get("includeEdges", 7)
     return {"triangle_local": local, "corners": corners, "normal": normal, "radius": radius,
-            "side": 1.0 if side >= 0 else -1.0, "gap": distance_to_triangle(centre, corners) - radius}
+            "side": 1.0 if side >= 0 else -1.0, "gap": distance_to_triangle(centre, corners) - radius,
+            "edges": int(edges) if isinstance(edges, int | float) else 7}
+
+
+def edges_words(flags: int) -> str:
+    """Exudyn's includeEdges in words: bit 1 the edge from corner 1 to 2, bit 2 from 2 to 3, bit 4 from 3 to 1."""
+    named = [name for bit, name in ((1, "1–2"), (2, "2–3"), (4, "3–1")) if flags & bit]
+    if len(named) == 3:
+        return "its face and all three edges"
+    if not named:
+        return f"its face only, no edge (includeEdges {flags})"
+    return f"its face and the edge{'s' if len(named) > 1 else ''} from corner {', '.join(named)} (includeEdges {flags})"
 
 
 _ROLLING = ("lateral", "longitudinal", "normal")

@@ -80,6 +80,12 @@ class Connector:
     derived: dict[str, float] = field(default_factory=dict)  # initial length, gap, ...
     markers: tuple[int, ...] = ()
     geometry: dict[str, Any] = field(default_factory=dict)  # contact geometry (``geometry.py``)
+    #: parameters the program set that do nothing there: name -> (value, why) (``acting.py``)
+    idle: dict[str, tuple[Any, str]] = field(default_factory=dict)
+    #: a user function's force or torque: its key, and at each sampled time what Exudyn applied (and the
+    #: rotation, length or displacement the function was given), as the sandbox read it
+    user_function: str = ""
+    values: tuple[tuple[float, dict[str, Any]], ...] = ()
 
     @property
     def label(self) -> str:
@@ -122,6 +128,9 @@ class SystemView:
     marker_states: tuple[dict[int, tuple[float, ...]], ...] = ()  # marker positions at each sample time
     marker_rotations: tuple[dict[int, np.ndarray], ...] = ()  # rigid markers' rotations at each sample time
     spins: dict[int, Spin] = field(default_factory=dict)  # accumulated rotation per body (``orientation.py``)
+    asked: tuple[tuple[float, ...], ...] = ()  # per sample time, the times the model asked that it answers
+    steps: tuple[float | None, ...] = ()  # per sample time, the solver's step size there
+    run_end: float | None = None  # the last time the solver reached (the requested times need not be it)
 
     def body(self, index: int) -> Body | None:
         return next((b for b in self.bodies if b.index == index), None)

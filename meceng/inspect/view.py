@@ -14,6 +14,8 @@ from typing import Any
 import numpy as np
 
 from meceng.catalog.names import BODY_KINDS, load_name, object_name
+from meceng.inspect.acting import sort_contact
+from meceng.inspect.coordinates import COORDINATE_TYPES, read_coordinate
 from meceng.inspect.geometry import rolling_disc, sphere_triangle
 from meceng.inspect.orientation import spins
 from meceng.inspect.system import (
@@ -103,7 +105,8 @@ def _markers_at(inspection: dict[str, Any], k: int) -> dict[int, dict[str, Any]]
 
 
 def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], node_body: dict[int, int],
-               marker_t0: dict[int, dict[str, Any]]) -> Connector:
+               marker_t0: dict[int, dict[str, Any]], nodes: list[dict[str, Any]], inspection: dict[str, Any]
+               ) -> Connector:
     exudyn_type = str(item.get("objectType", ""))
     if "trianglePoints" in item:  # Exudyn reports a sphere-triangle contact as ContactSphereSphere
         exudyn_type = "ContactSphereTriangle"
@@ -124,8 +127,9 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
         local = item.get("rotationMarker0")
         if frame is not None and local is not None:
             frame = frame @ np.asarray(local, dtype=float).reshape(3, 3)
-    parameters = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k
-                  and _small(v) and (k in _ALWAYS_SHOWN or _nonzero(v))}
+    candidates = {k: v for k, v in item.items() if k not in _NOT_PARAMETERS and "UserFunction" not in k and _small(v)}
+    sorted_out = sort_contact(exudyn_type, candidates, _ALWAYS_SHOWN)  # a contact: what acts, what was set idle
+    parameters, idle = sorted_out or ({k: v for k, v in candidates.items() if k in _ALWAYS_SHOWN or _nonzero(v)}, {})
     axis, free, locked, derived = _semantics(exudyn_type, item, frame, points)
     shape: dict[str, Any] = {}
     if exudyn_type == "ContactSphereTriangle" and len(numbers) == 2:
@@ -133,8 +137,15 @@ def _connector(index: int, item: dict[str, Any], markers: list[dict[str, Any]], 
     if exudyn_type == "JointRollingDisc" and len(numbers) == 2:
         shape = rolling_disc(item, points[0], frame)
         shape["disc_rotation"] = _rotation(marker_t0.get(numbers[1], {}).get("R"))
+    if exudyn_type in COORDINATE_TYPES:  # which coordinate of which body each end is
+        shape = {"coordinates": tuple(read_coordinate(markers[m] if 0 <= m < len(markers) else {}, nodes, node_body)
+                                      for m in numbers),
+                 "user_offset": item.get("offsetUserFunction", 0) not in (0, None)}
+    user = next((k for k, v in item.items() if k.endswith("UserFunction") and "offset" not in k
+                 and v not in (0, None, "")), "")
     return Connector(index, object_name(exudyn_type), exudyn_type, _name(item), tuple(bodies), points, axis,
-                     free, locked, parameters, derived, tuple(numbers), shape)
+                     free, locked, parameters, derived, tuple(numbers), shape, idle, user,
+                     _connector_values(index, inspection) if user else ())
 
 
 #: Parameters a model must see even at zero (a spring without damping is a fact, not a default).
@@ -261,7 +272,7 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
                 states=_states(index, inspection, to_centre)))
     for index, item in enumerate(objects):
         if object_name(str(item.get("objectType", ""))) not in BODY_KINDS and item.get("markerNumbers") is not None:
-            connectors.append(_connector(index, item, markers, node_body, marker_t0))
+            connectors.append(_connector(index, item, markers, node_body, marker_t0, nodes, inspection))
     loads = []
     for index, item in enumerate(items.get("loads", [])):
         marker = markers[int(item["markerNumber"])] if 0 <= int(item.get("markerNumber", -1)) < len(markers) else {}
@@ -285,7 +296,10 @@ def build_view(items: dict[str, list[dict[str, Any]]], system: dict[str, Any],
     return SystemView(view_bodies, tuple(connectors), tuple(loads), tuple(float(s["t"]) for s in states),
                       _ranges(view_bodies, nodes, ode2, trajectory, turns),
                       _int(system.get("degreeOfFreedom")), _int(system.get("redundantConstraints")), marker_states,
-                      marker_rotations, turns)
+                      marker_rotations, turns,
+                      tuple(tuple(float(a) for a in s.get("asked") or ()) for s in states),
+                      tuple(float(s["step"]) if isinstance(s.get("step"), int | float) else None for s in states),
+                      float(times[-1]) if times is not None and len(times) else None)
 
 
 def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, tuple[float, ...] | str], ...]:
@@ -298,6 +312,12 @@ def _load_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, t
         elif (vector := _tuple(value)) is not None:
             out.append((float(sample["t"]), vector))
     return tuple(out)
+
+
+def _connector_values(index: int, inspection: dict[str, Any]) -> tuple[tuple[float, dict[str, Any]], ...]:
+    """A user-function connector's force or torque at the sampled times, as the sandbox read it."""
+    return tuple((float(sample["t"]), value) for sample in inspection.get("states", [])
+                 if isinstance(value := sample.get("connectors", {}).get(str(index)), dict))
 
 
 def _int(value: Any) -> int | None:

@@ -6,8 +6,9 @@ Each sample is the paper's two steps (choose components, write the program) aske
 own sampling seed (``ChatRequest.sample``); each program runs in the sandbox with its motion
 recorded and is graded against the ground truth like any answer, so the record holds every sample's
 paper and behaviour verdict, but the grouping never sees the ground truth: only the samples' own
-motions. The same program text is run and graded once. A sample the server lost is recorded as
-such and counted nowhere; when every sample is lost, the task is lost (``--resume`` does it again).
+motions. The same program text is run and graded once. A sample the server lost (or whose program
+the wall clock stopped under its CPU limit) is recorded as such and counted nowhere; when every
+sample is lost, the task is lost (``--resume`` does it again).
 """
 
 from __future__ import annotations
@@ -132,7 +133,12 @@ async def consensus_flow(instance: TaskInstance, kind: TaskKind, ctx: Any) -> di
     graded: dict[int, Graded] = {index: job.result() for index, job in job_of.items()}
     motions = [graded[s.index].candidate.motion if s.index in graded else None for s in samples]
     programs = [s.generation.code if s.generation is not None else None for s in samples]
-    lost = [s.lost is not None for s in samples]
+    # a sample the wall clock stopped with CPU time to spare was the machine's, not the model's: lost
+    lost = [s.lost is not None or (s.index in graded and graded[s.index].candidate.lost_to_machine) for s in samples]
+    if all(lost):
+        reason = next(graded[s.index].candidate.error for s in samples if s.index in graded)
+        return lost_record(instance, f"every sample lost: {reason}", _times(t0, t_llm, time.perf_counter()),
+                           selection=answered[0].selection, generation=answered[0].generation)
     consensus = await offload(evaluator.grading, consensus_of, motions, programs, lost, tolerance_for(instance.slug))
     assert consensus.chosen is not None
     chosen = samples[consensus.chosen]

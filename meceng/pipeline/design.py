@@ -12,46 +12,19 @@ from __future__ import annotations
 
 import asyncio
 import dataclasses
-from dataclasses import dataclass
-from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from meceng.catalog.component import Catalog
 from meceng.eval.behaviour import tolerance_for
 from meceng.eval.chain import BEHAVIOUR_STAGE, RIGID_STAGES, StageResult, Verdict, by_behaviour, evaluate_rigid
 from meceng.eval.design import DESIGN_DECLARED, DESIGN_MET, ONE_SIMULATION, count_simulations, judge_design, read_design
 from meceng.tasks.base import TaskInstance
 from meceng.tasks.design_base import DesignTask
-from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.execution import Execution
 
 from .evaluation import Evaluator, not_run
 from .graded import Graded
 from .grading import offload
-
-
-@dataclass
-class DesignKind:
-    """Level 4: a design answer graded by its declared values, the spec and behaviour."""
-
-    evaluator: Evaluator
-    files: dict[str, Path] | None = None
-
-    @property
-    def catalog(self) -> Catalog:
-        return self.evaluator.catalog
-
-    @property
-    def limits(self) -> ExecutionLimits:
-        return self.evaluator.limits
-
-    async def grade(self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None,
-                    error: str | None, *, keep: bool) -> Graded:
-        return await grade_design(self.evaluator, instance, code, selected, error)
-
-    def extend(self, record: dict[str, Any], instance: TaskInstance, graded: Graded, run_dir: Path) -> None:
-        record["design"] = graded.facts.get("design")
 
 
 def _stopped(stages: list[StageResult], why: str) -> Verdict:

@@ -23,11 +23,15 @@ class GradedDraft:
     fails: bool
     first_failure: str | None
     categories: tuple[str, ...]
+    by_behaviour: bool = False  # an open text's draft: graded by behaviour, which names no category
 
     @property
-    def agrees(self) -> bool:
+    def agrees(self) -> bool | None:
         """The grader says what the label says: the category among the record's categories (levels
-        1-2), or the first failed stage among the fault's expected ones (parts)."""
+        1-2), or the first failed stage among the fault's expected ones (parts); None where the
+        behaviour verdict graded it (an open text): it names no category to agree with."""
+        if self.by_behaviour:
+            return None
         if self.draft.label in PART_EXPECTED:
             return self.first_failure in PART_EXPECTED[self.draft.label]
         return self.draft.label in self.categories
@@ -52,7 +56,7 @@ async def grade_drafts(instance: TaskInstance, evaluator: Evaluator) -> list[Gra
             log.error("draft not graded", task=instance.key, draft=draft.id, error=f"{type(exc).__name__}: {exc}")
             return GradedDraft(draft, False, "not graded", ())
         return GradedDraft(draft, not verdict.overall and verdict.infrastructure_error is None, verdict.first_failure,
-                           tuple(verdict.error_categories))
+                           tuple(verdict.error_categories), by_behaviour=instance.texts == "open")
     return list(await asyncio.gather(*(one(d) for d in candidate_drafts(instance))))
 
 

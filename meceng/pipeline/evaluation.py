@@ -280,6 +280,10 @@ class Evaluator:
                 candidate = Execution(stage="flagged", error=mesh_check.error, error_kind="mesh_size")
             else:
                 candidate = await self.execute_part(mesh_check.code, instance, check=True, save_to=pending)
+        if candidate.lost_to_machine:  # stopped by the wall clock, under the CPU limit: not graded
+            if pending is not None:
+                pending.unlink(missing_ok=True)
+            return Verdict((), infrastructure_error=f"part not graded: {candidate.error}"), candidate, reference, facts
         produced = None
         frequencies = None
         if candidate.error is None and candidate.part is not None and candidate.surface is not None:

@@ -18,7 +18,7 @@ from meceng.eval.chain import StageResult
 from meceng.tasks.base import TaskInstance
 from meceng.tools.execution import ExecutionLimits
 
-from .design import DesignKind
+from .design import grade_design
 from .evaluation import Evaluator
 from .graded import Graded
 
@@ -127,6 +127,18 @@ class AssemblyKind:
         timing["total_s"] = round(timing["total_s"] + self.part_timing.get("parts_wall_s", 0.0), 4)
         timing.update({k: round(v, 4) for k, v in self.part_timing.items()})
         record["parts"] = self.part_keys
+
+
+@dataclass
+class DesignKind(RigidKind):
+    """Level 4: a rigid task's catalog and limits; graded by its declared values, the spec and behaviour."""
+
+    async def grade(self, instance: TaskInstance, code: str | None, selected: tuple[str, ...] | None,
+                    error: str | None, *, keep: bool) -> Graded:
+        return await grade_design(self.evaluator, instance, code, selected, error)
+
+    def extend(self, record: dict[str, Any], instance: TaskInstance, graded: Graded, run_dir: Path) -> None:
+        record["design"] = graded.facts.get("design")
 
 
 def single_kind(instance: TaskInstance, evaluator: Evaluator, keep_at: Path | None = None) -> TaskKind:

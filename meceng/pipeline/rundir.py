@@ -163,6 +163,8 @@ class RunWriter:
         return latest
 
 
+#: what the summary reads of an execution (eval/limits.py): how it ended and how long it took
+_EXECUTION_SUMMARY_KEYS = ("stage", "error_kind", "cpu_s", "wall_s", "wall_time")
 #: what the summary reads of an agent's block; the transcript and programs stay in the journal
 _AGENT_SUMMARY_KEYS = ("first_overall", "first_failure", "rounds", "tool_calls", "completion_tokens",
                        "prompt_tokens", "stop_reason")
@@ -179,6 +181,9 @@ def slim_record(record: dict[str, Any]) -> dict[str, Any]:
             slim[step] = {"meta": {k: v for k, v in record[step].get("meta", {}).items() if k != "thinking"}}
     if "agent" in record:
         slim["agent"] = {k: record["agent"].get(k) for k in _AGENT_SUMMARY_KEYS}
+    for key in ("execution", "reference_execution"):  # the summary counts the runs that reached a limit
+        if isinstance(record.get(key), dict):
+            slim[key] = {k: record[key].get(k) for k in _EXECUTION_SUMMARY_KEYS if k in record[key]}
     if "consensus" in record:  # the groups and every sample's verdicts, without programs and words
         block = record["consensus"]
         slim["consensus"] = {**{k: v for k, v in block.items() if k not in ("samples", "agreements")},

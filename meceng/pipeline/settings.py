@@ -23,7 +23,7 @@ class RunSettings:
     out: Path = Path("runs")
     run_name: str | None = None
     workers: int = max(1, os.cpu_count() or 1)
-    exec_timeout_s: float = 60.0
+    exec_timeout_s: float = 60.0  # CPU seconds per program; the wall clock bounds it at 3x + 10 s
     select_template: str = DEFAULT_SELECT
     code_template: str = DEFAULT_CODE
     solution_tolerance: float = 1e-5

@@ -39,7 +39,7 @@ log = get_logger(__name__)
 STACK = ("exudyn", "ngsolve", "netgen-mesher", "numpy", "scipy", "pymeshlab", "meceng")
 #: the harness code that decides what an execution captures
 CAPTURE_MODULES = ("runner.py", "harness.py", "part_runner.py", "guard.py", "executor.py", "execution.py",
-                   "inspection.py", "motion.py")
+                   "inspection.py", "motion.py", "pinning.py")  # pinning: the numbers a solve gives
 #: 2: the program's leading comment block is left out of the key (issue 36: it holds the task's text,
 #: and the paper's and the open text's ground truths are the same program)
 FORMAT = 2

@@ -17,6 +17,7 @@ from meceng.eval.calibration import consensus_sections
 from meceng.eval.categories import CATEGORIES
 from meceng.eval.design_tables import HEADERS as DESIGN_HEADERS
 from meceng.eval.design_tables import design_cells, design_rows
+from meceng.eval.limits import LIMIT_HEADERS, limit_rows
 from meceng.eval.rates import Rate, Run, load_runs
 from meceng.eval.tables import (
     FLEXIBLE_COLUMNS,
@@ -239,6 +240,9 @@ def build_report(paths: list[Path], out: Path, models_file: Path | None = None) 
 
     for title, headers, rows in consensus_sections(runs):
         sections.append((title, *_table(headers, rows), None))
+
+    md, ht = _table(LIMIT_HEADERS, limit_rows((run.label, run.tasks) for run in runs))
+    sections.append(("Program time limits (CPU time is graded; the wall clock only bounds a run)", md, ht, None))
 
     intro = (f"{len(runs)} run(s), {sum(len(r.tasks) for r in runs)} task records. Rates in % with the 95 % "
              "Wilson interval in brackets; infrastructure failures are left out of the rates.")

@@ -31,9 +31,10 @@ from typing import Any
 
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
+from meceng.llm.ensemble import EnsembleBackend
 from meceng.llm.factory import make_backend
 from meceng.llm.scheduler import EndpointBackend, PrioritySlots
-from meceng.llm.types import LOCAL_BACKENDS
+from meceng.llm.types import LOCAL_BACKENDS, Backend, LLMSettings
 from meceng.logs import get_logger
 from meceng.pipeline import RunSettings, run_benchmark
 from meceng.pipeline.grading import grading_pool
@@ -64,19 +65,30 @@ class SweepJob:
     point: GridPoint | None = None  # the sweep's grid point it runs, when it came from a spec
 
     @property
-    def hosts(self) -> tuple[str, ...]:
-        """The servers this run uses. A hosted API is a server per model (its limits are per model
-        and it swaps nothing): two models on api.openai.com go side by side, not one after another."""
-        if self.settings.llm.backend in LOCAL_BACKENDS:
-            return ()
-        hosted = self.settings.llm.backend == "anthropic" or any(
-            "api.openai.com" in h for h in self.settings.llm.hosts)
-        return tuple(h.rstrip("/") + (f"#{self.model}" if hosted else "") for h in self.settings.llm.hosts)
+    def models(self) -> tuple[str, ...]:
+        """The models this run asks: a consensus run across models asks each of its members."""
+        return tuple(dict.fromkeys(llm.model for llm in self.settings.sample_models))
 
-    def slots(self, servers: dict[str, PrioritySlots]) -> dict[str, PrioritySlots]:
-        """This run's endpoints (by host) to the sweep's slots of each server."""
-        return {h.rstrip("/"): servers.setdefault(key, PrioritySlots(self.settings.llm.batch_size))
-                for h, key in zip(self.settings.llm.hosts, self.hosts, strict=True)}
+    @property
+    def hosts(self) -> tuple[str, ...]:
+        """The servers this run uses, every model's (a consensus run across models uses each member's
+        servers). A hosted API is a server per model (its limits are per model and it swaps nothing):
+        two models on api.openai.com go side by side, not one after another."""
+        return tuple(dict.fromkeys(key for llm in self.settings.sample_models for key in _servers(llm)))
+
+    def slots(self, servers: dict[str, PrioritySlots], llm: LLMSettings | None = None) -> dict[str, PrioritySlots]:
+        """One model's endpoints (by host; the run's model unless ``llm``) to the sweep's slots of each server."""
+        llm = llm or self.settings.llm
+        return {h.rstrip("/"): servers.setdefault(key, PrioritySlots(llm.batch_size))
+                for h, key in zip(llm.hosts, _servers(llm), strict=True)}
+
+
+def _servers(llm: LLMSettings) -> tuple[str, ...]:
+    """The sweep's name of each server a model is asked on (a hosted API: one per model)."""
+    if llm.backend in LOCAL_BACKENDS:
+        return ()
+    hosted = llm.backend == "anthropic" or any("api.openai.com" in h for h in llm.hosts)
+    return tuple(h.rstrip("/") + (f"#{llm.model}" if hosted else "") for h in llm.hosts)
 
 
 def server_groups(jobs: list[SweepJob]) -> list[list[SweepJob]]:
@@ -98,8 +110,8 @@ def server_groups(jobs: list[SweepJob]) -> list[list[SweepJob]]:
         groups.setdefault(find(job.hosts[0]) if job.hosts else "", []).append(job)
     ordered = []
     for members in groups.values():
-        first = {m.model: k for k, m in reversed(list(enumerate(members)))}
-        ordered.append(sorted(members, key=lambda m: first[m.model]))  # stable: sweep order per model
+        first = {m.models: k for k, m in reversed(list(enumerate(members)))}
+        ordered.append(sorted(members, key=lambda m: first[m.models]))  # stable: sweep order per model
     return ordered
 
 
@@ -237,6 +249,23 @@ async def _drive(group: list[SweepJob], shared: SharedServices, servers: dict[st
         await asyncio.gather(*running, return_exceptions=True)
 
 
+def _backend(job: SweepJob, settings: RunSettings, servers: dict[str, PrioritySlots], rank: int
+             ) -> Backend | None:
+    """The run's backend with the sweep's slots of every server it asks: a consensus run across
+    models gets one backend per model, each on its servers' shared slots. None where the run makes
+    its own (a scripted model needs the run's task instances: pipeline/run.py)."""
+    models = settings.sample_models
+    if any(llm.backend == "scripted" for llm in models):
+        return None
+    members = []
+    for llm in models:
+        backend = make_backend(llm)
+        if isinstance(backend, EndpointBackend):
+            backend.share_slots(job.slots(servers, llm), rank)
+        members.append((llm, backend))
+    return EnsembleBackend(members) if len(members) > 1 else members[0][1]
+
+
 def _blocked(job: SweepJob, running: dict[asyncio.Task[None], SweepJob], watch: _Group) -> str | None:
     """Why ``job`` may not start yet (None: it may)."""
     if not running:
@@ -244,7 +273,7 @@ def _blocked(job: SweepJob, running: dict[asyncio.Task[None], SweepJob], watch: 
     others = list(running.values())
     if not job.hosts:
         return None if len(others) < SERVERLESS_RUNS else f"waits for {others[0].name} (workers)"
-    other_model = next((o for o in others if o.model != job.model), None)
+    other_model = next((o for o in others if o.models != job.models), None)
     if other_model is not None:
         return f"waits for {other_model.name} (another model on {', '.join(job.hosts)})"
     if watch.idle_polls < IDLE_POLLS:
@@ -266,12 +295,7 @@ async def _one(job: SweepJob, shared: SharedServices, servers: dict[str, Priorit
     screen.status(job, "starting")
     backend = None
     try:
-        # the scripted model needs the run's task instances, a consensus run across models a backend
-        # per model: the run makes those (pipeline/run.py); their slots are not shared with other runs
-        backend = (None if settings.llm.backend == "scripted" or settings.consensus_models
-                   else make_backend(settings.llm))
-        if isinstance(backend, EndpointBackend):
-            backend.share_slots(job.slots(servers), rank)
+        backend = _backend(job, settings, servers, rank)
         path = await run_benchmark(settings, backend=backend, shared=shared,
                                    progress=functools.partial(screen.run_rows, job))
     except RunBusy as exc:

@@ -27,6 +27,7 @@ from typing import Any
 
 from meceng.agents.prompts import DEFAULT_CODE, DEFAULT_SELECT
 from meceng.llm.types import LLMSettings, backend_for
+from meceng.pipeline.settings import RunSettings
 from meceng.sweeps.hosts import unreachable_hosts  # noqa: F401 (scripts/sweep.py takes it from here)
 from meceng.sweeps.keys import (
     GRID_KEYS,
@@ -103,7 +104,7 @@ class SweepSpec:
     studies: tuple[Study, ...]
     out: Path = Path("runs")
     workers: int | None = None
-    exec_timeout_s: float = 60.0
+    exec_timeout_s: float = 60.0  # CPU seconds per program (RunSettings.exec_timeout_s)
     description: str = ""
     extra: dict[str, Any] = field(default_factory=dict)
 
@@ -305,20 +306,39 @@ def unique_points(planned: list[PlannedRun]) -> list[GridPoint]:
 
 @cache
 def workload(levels: tuple[str, ...], only: tuple[str, ...], variations: int, seed: int,
-             texts: str = "paper") -> tuple[int, int]:
+             texts: str = "paper", agent: str = "pipeline", samples: int = 5, drafts_per_task: int = 1,
+             repair_tools: bool = True) -> tuple[int, int]:
     """(task records, LLM requests at most) of one pipeline run: an assembly counts its distinct
-    parts too, and its own two requests are made only when every part passed; open texts count the
-    models that have one."""
+    parts too, and its own requests are made only when every part passed; open texts count the
+    models that have one. Requests per task by the run's agent (``requests_per_task``); a repair run
+    has up to ``drafts_per_task`` tasks per instance (only the drafts that fail are tasks)."""
     registry = default_registry()
     models, _ = registry.with_texts(registry.select(levels, only or None), texts, levels, only)
     records = 0
     for instance in registry.instances(models, seed, variations, texts):
         records += 1 + len({part.key for _, part in instance.parts}) if instance.kind == "assembly" else 1
-    return records, records * REQUESTS_PER_TASK
+    if agent == "repair":
+        records *= drafts_per_task
+    return records, records * requests_per_task(agent, samples, repair_tools)
+
+
+def requests_per_task(agent: str, samples: int = 5, repair_tools: bool = True) -> int:
+    """LLM requests one task makes at most: the pipeline selects and writes (2); a consensus of K
+    samples does so K times; the tool-calling loop selects and then asks up to its rounds; a repair
+    draft has its components chosen and asks once, or up to the rounds with tools."""
+    rounds = RunSettings.max_rounds  # the runs a sweep starts keep the default
+    if agent == "consensus":
+        return REQUESTS_PER_TASK * samples
+    if agent == "loop":
+        return 1 + rounds
+    if agent == "repair":
+        return rounds if repair_tools else 1
+    return REQUESTS_PER_TASK
 
 
 def point_workload(point: GridPoint) -> tuple[int, int]:
-    return workload(point.levels, point.only, point.variations, point.seed, point.texts)
+    return workload(point.levels, point.only, point.variations, point.seed, point.texts, point.agent,
+                    point.samples, point.drafts_per_task, point.repair_tools)
 
 
 def with_overrides(study: Study, **changes: Any) -> Study:

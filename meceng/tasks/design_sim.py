@@ -20,6 +20,11 @@ def simulate(program: str) -> tuple[np.ndarray, np.ndarray]:
     if not solve or tail.strip():
         raise ValueError("a design reference ends in its one mbs.SolveDynamic(simulationSettings) call")
     namespace: dict[str, Any] = {"__name__": "meceng_design_reference"}
+    try:
+        import exudyn  # noqa: F401
+    except ImportError as exc:
+        raise RuntimeError(f"a design task's instance runs its reference in this process, and Exudyn does not "
+                           f"import here ({exc}): `meceng doctor` names what is missing") from exc
     exec(compile(head, "<design reference>", "exec"), namespace)
     mbs = namespace["mbs"]
     times: list[float] = []

@@ -1,9 +1,15 @@
 """Runs one program in its own child process and reads back what the harness recorded.
 
 Every program gets a fresh scratch directory (its cwd), its own session / process group (so a
-timeout kills the program and every process it started), resource limits, a stripped
-environment and bounded capture of stdout/stderr. A segfault or a kill is a verdict, not a crash
-of the run: the stage the program had reached is read from the harness's ``stage.log``.
+timeout kills the program and every process it started), resource limits, a stripped and pinned
+environment (``pinning``) and bounded capture of stdout/stderr. A segfault or a kill is a
+verdict, not a crash of the run: the stage the program had reached is read from the harness's
+``stage.log``.
+
+The program's limit is CPU time, enforced by the kernel (RLIMIT_CPU: SIGXCPU, then SIGKILL); the
+wall clock only bounds the run (``ExecutionLimits.wall_s``). Which of the two stopped it is read
+from the child's own rusage (``wait4``): the CPU limit is the program's timeout, the wall clock
+with CPU time to spare is the machine's (``wall_timeout``, an infrastructure failure).
 """
 
 from __future__ import annotations
@@ -23,62 +29,44 @@ from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
+import structlog
 
 from meceng.syntax import parsing
+from meceng.tools.cold import run_cold
 from meceng.tools.execution import Execution, ExecutionLimits
+from meceng.tools.pinning import PINNED_ENV
 from meceng.tools.warm import WarmPool
+
+log = structlog.get_logger(__name__)
 
 #: Environment variables passed to the child; everything else (API keys, tokens) is dropped.
 ENV_KEEP = ("PATH", "HOME", "LANG", "LC_ALL", "PYTHONPATH", "VIRTUAL_ENV", "TMPDIR", "SYSTEMROOT")
 
 
 def child_env() -> dict[str, str]:
+    """The child's environment: what it needs from ours, headless plotting, and the pins that make
+    its work independent of the launcher (one thread per numerical library, a fixed hash seed)."""
     env = {k: os.environ[k] for k in ENV_KEEP if k in os.environ}
-    env.update(
-        MPLBACKEND="Agg",
-        OMP_NUM_THREADS="1",
-        OPENBLAS_NUM_THREADS="1",
-        MKL_NUM_THREADS="1",
-        PYTHONDONTWRITEBYTECODE="1",
-        PYTHONUNBUFFERED="1",
-    )
+    env.update(MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1", PYTHONUNBUFFERED="1", **PINNED_ENV)
     return env
+
+
+#: seconds between the CPU limit's SIGXCPU and the kernel's SIGKILL (a program may catch SIGXCPU)
+CPU_GRACE_S = 2
+
+
+def rlimits_of(limits: ExecutionLimits) -> dict[str, int]:
+    """The kernel limits of a child (the warm child sets them itself, after the fork)."""
+    return {"memory": limits.memory_bytes, "cpu": limits.cpu_limit_s, "cpu_hard": limits.cpu_limit_s + CPU_GRACE_S,
+            "file": limits.file_bytes}
 
 
 def _limit_child(limits: ExecutionLimits) -> None:
     """Runs in the child between fork and exec: resource limits only (no library calls here)."""
     resource.setrlimit(resource.RLIMIT_AS, (limits.memory_bytes, limits.memory_bytes))
-    cpu = int(limits.timeout_s) + 5
-    resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
+    resource.setrlimit(resource.RLIMIT_CPU, (limits.cpu_limit_s, limits.cpu_limit_s + CPU_GRACE_S))
     resource.setrlimit(resource.RLIMIT_FSIZE, (limits.file_bytes, limits.file_bytes))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-
-
-async def _read_bounded(stream: asyncio.StreamReader | None, limit: int) -> bytes:
-    """Read everything, keep the first and last ``limit // 2`` bytes."""
-    if stream is None:
-        return b""
-    head = bytearray()
-    tail = bytearray()
-    half = max(limit // 2, 1)
-    dropped = 0
-    while chunk := await stream.read(65536):
-        if len(head) < half:
-            take = half - len(head)
-            head += chunk[:take]
-            chunk = chunk[take:]
-        tail += chunk
-        if len(tail) > half:
-            dropped += len(tail) - half
-            del tail[: len(tail) - half]
-    if dropped:
-        return bytes(head) + f"\n[... {dropped} bytes dropped ...]\n".encode() + bytes(tail)
-    return bytes(head + tail)
-
-
-def _kill_group(pid: int) -> None:
-    with contextlib.suppress(ProcessLookupError, PermissionError):
-        os.killpg(pid, signal.SIGKILL)
 
 
 async def execute(
@@ -118,44 +106,10 @@ async def _run_in(scratch: Path, program: str, sim_block: str, limits: Execution
                   slots: asyncio.Semaphore | None) -> Execution:
     job, token = _write_job(scratch, program, sim_block, limits, check)
     async with slots or contextlib.nullcontext():
-        returncode, timed_out, stdout, stderr, wall = await _run_cold(scratch, job, limits)
-    return _collect(scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
-
-
-async def _run_cold(scratch: Path, job: Path, limits: ExecutionLimits,
-                    ) -> tuple[int | None, bool, bytes, bytes, float]:
-    t0 = time.perf_counter()
-    proc = await asyncio.create_subprocess_exec(
-        sys.executable,
-        "-m",
-        "meceng.tools.runner",
-        str(job),
-        cwd=scratch,
-        env=child_env(),
-        stdin=asyncio.subprocess.DEVNULL,
-        stdout=asyncio.subprocess.PIPE,
-        stderr=asyncio.subprocess.PIPE,
-        start_new_session=True,
-        preexec_fn=lambda: _limit_child(limits),
-    )
-    readers = asyncio.gather(
-        _read_bounded(proc.stdout, limits.output_bytes), _read_bounded(proc.stderr, limits.output_bytes)
-    )
-    timed_out = False
-    try:
-        await asyncio.wait_for(proc.wait(), timeout=limits.timeout_s)
-    except TimeoutError:
-        timed_out = True
-    finally:
-        # the program's children die with it, whether it ended or not
-        _kill_group(proc.pid)
-        if proc.returncode is None:
-            await proc.wait()
-    try:
-        stdout, stderr = await asyncio.wait_for(readers, timeout=5.0)
-    except TimeoutError:
-        stdout, stderr = b"", b"[output not collected: a child kept the pipes open]"
-    return proc.returncode, timed_out, stdout, stderr, time.perf_counter() - t0
+        run = await run_cold((sys.executable, "-m", "meceng.tools.runner", str(job)), scratch, child_env(),
+                             lambda: _limit_child(limits), limits.wall_s, limits.output_bytes)
+    return _collect(scratch, run.returncode, run.wall_killed, run.stdout, run.stderr, run.wall_s, run.cpu_s,
+                    limits, token)
 
 
 def _write_job(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
@@ -191,24 +145,45 @@ def _read_bounded_file(path: Path, limit: int) -> bytes:
 async def _run_warm(scratch: Path, program: str, sim_block: str, limits: ExecutionLimits,
                     pool: WarmPool, check: bool, slots: asyncio.Semaphore | None) -> Execution:
     job, token = _write_job(scratch, program, sim_block, limits, check)
-    rlimits = {"memory": limits.memory_bytes, "cpu": int(limits.timeout_s) + 5, "file": limits.file_bytes}
     async with slots or contextlib.nullcontext():
         t0 = time.perf_counter()
-        returncode, timed_out = await pool.run(job, child_env(), rlimits, limits.timeout_s)
+        returncode, wall_killed, cpu = await pool.run(job, child_env(), rlimits_of(limits), limits.wall_s)
         wall = time.perf_counter() - t0
     stdout = _read_bounded_file(scratch / "stdout.txt", limits.output_bytes)
     stderr = _read_bounded_file(scratch / "stderr.txt", limits.output_bytes)
     # reading the result, trajectory and part files: off the event loop
-    return await asyncio.to_thread(_collect, scratch, returncode, timed_out, stdout, stderr, wall, limits, token)
+    return await asyncio.to_thread(_collect, scratch, returncode, wall_killed, stdout, stderr, wall, cpu, limits,
+                                   token)
+
+
+def stopped_by_limit(returncode: int | None, wall_killed: bool, cpu: float | None, wall: float,
+                     limits: ExecutionLimits) -> tuple[str, str] | None:
+    """(error_kind, error) when a limit ended the run, else None.
+
+    SIGXCPU is the kernel's CPU limit; SIGKILL with the CPU time past the limit its hard limit (a
+    program that caught SIGXCPU). The wall clock with CPU time to spare stopped a program that
+    waited (for a core on a busy machine, or in a sleep): the machine's failure, never graded."""
+    over = cpu is not None and cpu >= limits.cpu_limit_s
+    spent = f"{cpu:.1f} s of CPU" if cpu is not None else "CPU time unknown"
+    if returncode == -signal.SIGXCPU or (over and (wall_killed or returncode == -signal.SIGKILL)):
+        return "timeout", (f"timeout: the CPU time limit of {limits.timeout_s:g} s was reached ({spent} in "
+                           f"{wall:.1f} s; process group killed)")
+    if wall_killed:
+        log.warning("execution.wall_timeout", wall_s=round(wall, 2), cpu_s=cpu, cpu_limit_s=limits.timeout_s)
+        return "wall_timeout", (f"wall-clock timeout: stopped at {limits.wall_s:g} s with {spent}, under the "
+                                f"CPU limit of {limits.timeout_s:g} s: the machine was too busy or the program "
+                                "waited (an infrastructure failure, not the program's)")
+    return None
 
 
 def _collect(
     scratch: Path,
     returncode: int | None,
-    timed_out: bool,
+    wall_killed: bool,
     stdout: bytes,
     stderr: bytes,
     wall: float,
+    cpu: float | None,
     limits: ExecutionLimits,
     token: str,
 ) -> Execution:
@@ -218,10 +193,10 @@ def _collect(
     stages = stage_log.read_text().split() if stage_log.exists() else []
     last_stage = stages[-1] if stages else "started"
     common = {"stdout_tail": out[-4000:], "stderr_tail": err[-4000:], "returncode": returncode,
-              "wall_time": wall}
-    if timed_out:
-        return Execution(stage=last_stage, error=f"timeout after {limits.timeout_s:g} s (process group killed)",
-                         error_kind="timeout", **common)
+              "wall_time": wall, "cpu_time": cpu}
+    stopped = stopped_by_limit(returncode, wall_killed, cpu, wall, limits)
+    if stopped is not None:
+        return Execution(stage=last_stage, error=stopped[1], error_kind=stopped[0], **common)
     # only the harness knows the token: a result file the program forged is ignored
     result_path = scratch / f"result-{token}.json"
     if not result_path.exists():
@@ -236,7 +211,8 @@ def _collect(
     except (OSError, ValueError) as exc:
         return Execution(stage=last_stage, error=f"unreadable result: {exc}", error_kind="no_result", **common)
     if result.get("error_kind") == "safety":  # refused by the static check: the program never ran
-        return Execution(stage="refused", error=result.get("error"), error_kind="safety")
+        return Execution(stage="refused", error=result.get("error"), error_kind="safety", wall_time=wall,
+                         cpu_time=cpu)
     times = trajectory = None
     traj_path = scratch / f"trajectory-{token}.npy"
     if traj_path.exists():

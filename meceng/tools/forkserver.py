@@ -3,7 +3,8 @@
 Started by :class:`meceng.tools.warm.WarmPool` as ``python -m meceng.tools.forkserver SOCKET``.
 Protocol on the Unix socket, one connection per program: the client sends one JSON line
 ``{"job": path, "env": {...}, "limits": {...}}``; the server forks, answers ``{"pid": N}``, and
-when the child has ended ``{"exit": code}`` (negative: killed by that signal). The server is
+when the child has ended ``{"exit": code, "cpu_s": seconds}`` (negative: killed by that signal;
+the child's CPU time from ``wait4``, all its threads). The server is
 single-threaded and never meshes or solves, so its children can. It exits when its stdin closes
 (the parent is gone).
 """
@@ -21,11 +22,17 @@ import sys
 from typing import Any
 
 PRELOAD = ("numpy", "exudyn", "exudyn.utilities", "exudyn.graphics", "exudyn.interactive", "exudyn.solver",
-           "exudyn.FEM", "ngsolve", "netgen.occ", "json", "traceback", "ctypes",
+           "exudyn.FEM", "scipy.sparse.linalg", "ngsolve", "netgen.occ", "json", "traceback", "ctypes",
            "meceng.tools.runner", "meceng.tools.guard", "meceng.tools.warm", "meceng.tools.safety")
 
 
 def _preload() -> None:
+    # the libraries read their thread counts as they load: pinned before the first import (the
+    # pool starts the server with them already; this holds for a server started any other way)
+    from meceng.tools.pinning import THREAD_PINS, pin_eigensolvers
+
+    os.environ.update(THREAD_PINS)
+    pin_eigensolvers()
     for name in PRELOAD:
         with contextlib.suppress(Exception):  # an optional module missing only costs start-up later
             importlib.import_module(name)
@@ -95,15 +102,16 @@ def serve(path: str) -> None:
 def _reap(waiting: dict[int, socket.socket]) -> None:
     while True:
         try:
-            pid, status = os.waitpid(-1, os.WNOHANG)
+            pid, status, usage = os.wait4(-1, os.WNOHANG)
         except ChildProcessError:
             return
         if pid == 0:
             return
         conn = waiting.pop(pid, None)
         if conn is not None:
+            ended = {"exit": os.waitstatus_to_exitcode(status), "cpu_s": usage.ru_utime + usage.ru_stime}
             with contextlib.suppress(OSError):
-                conn.sendall(json.dumps({"exit": os.waitstatus_to_exitcode(status)}).encode() + b"\n")
+                conn.sendall(json.dumps(ended).encode() + b"\n")
             conn.close()
 
 

@@ -75,8 +75,8 @@ class Harness:
             "NumberOfSensors")}
         self.api.update({name: getattr(main_system, name) for name in (
             "GetNode", "GetObject", "GetMarker", "GetLoad", "GetSensor", "SetSensorParameter", "GetSensorStoredData",
-            "ComputeSystemDegreeOfFreedom", "GetObjectOutputBody", "GetNodeOutput", "GetMarkerOutput",
-            "GetNodeODE2Index")})
+            "ComputeSystemDegreeOfFreedom", "GetObjectOutputBody", "GetObjectOutput", "GetNodeOutput",
+            "GetMarkerOutput", "GetNodeODE2Index")})
         # the inspector's enums, before the program could replace them with objects of its own
         self.api.update(OutputVariableType=exu.OutputVariableType, ConfigurationType=exu.ConfigurationType)
         main_system.Assemble = assemble

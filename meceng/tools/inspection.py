@@ -4,8 +4,11 @@ What a body's items say (mass, inertia, reference coordinates) the parent reads 
 items; what only the live system knows is recorded here: where every body is, how it is turned and
 how fast it moves (Exudyn's own outputs, so Euler parameters, Rxyz rotations and 2D nodes all come
 out alike), the global position of every marker, and which ODE2 coordinates belong to which node.
-States are taken at t = 0 (after ``Assemble``) and at the first step at or after each requested
-time. Every call is guarded: an item Exudyn cannot describe is left out, never a failed run.
+States are taken at t = 0 (after ``Assemble``) and, for each requested time, at the solver step
+nearest to it (a step that lands within half a step of it: shortened steps, after an impact, leave the
+grid, and the first step past 0.5 s may be 0.5001 s while 0.499998 s was nearer); each state keeps the
+times it was asked for (``asked``) so the answer can say the time asked, or why the step differs.
+Every call is guarded: an item Exudyn cannot describe is left out, never a failed run.
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ class InspectionRecorder:
         self.configurations = api["ConfigurationType"]
         self.pending = sorted(float(t) for t in times)
         self.states: list[dict[str, Any]] = []
+        self.last_t: float | None = None  # the previous step's time: the step size, for the nearest step
         data = mbs.systemData
         self.objects = [api["GetObject"](mbs, i) for i in range(api["NumberOfObjects"](data))]
         self.n_markers = min(api["NumberOfMarkers"](data), MAX_MARKERS)
@@ -109,16 +113,26 @@ class InspectionRecorder:
                 marker[key] = vector(value)
             if marker.get("p") is not None:
                 markers[str(m)] = marker
-        self.states.append({"t": float(t), "bodies": bodies, "markers": markers})
+        self.states.append({"t": float(t), "bodies": bodies, "markers": markers, "asked": []})
         if self.loads:
             self.states[-1]["loads"] = user_load_values(self.mbs, self.api, t)
+            self.states[-1]["connectors"] = user_connector_values(self.mbs, self.api, self.objects, self.out)
+        if initial:
+            self.last_t = float(t)
+            while self.pending and self.pending[0] <= float(t) + 1e-12:
+                self.states[-1]["asked"].append(self.pending.pop(0))
 
     def after_step(self, t: float) -> None:
-        """Called from the harness's post-step hook: a state at the first step past each pending time."""
-        while self.pending and t >= self.pending[0] - 1e-12:
-            self.pending.pop(0)
+        """Called from the harness's post-step hook: a state at the step nearest each pending time,
+        judged by this step's size (the next one is taken to be as long)."""
+        half = 0.5 * (t - self.last_t) if self.last_t is not None else 0.0
+        self.last_t = t
+        while self.pending and t >= self.pending[0] - max(half, 1e-12):
+            asked = self.pending.pop(0)
             if not self.states or abs(self.states[-1]["t"] - t) > 1e-12:
                 self.take(t)
+                self.states[-1]["step"] = 2.0 * half
+            self.states[-1]["asked"].append(asked)
 
     def result(self) -> dict[str, Any]:
         return {"ode2": self.ode2_indices(), "states": self.states}
@@ -154,3 +168,43 @@ def user_load_values(mbs: Any, api: dict[str, Any], t: float) -> dict[str, Any]:
                 out[str(index)] = value
             break
     return out
+
+
+#: What a connector given by a user function applies (the first output its type has), and what the
+#: function was given (its measured rotation, length or displacement).
+_CONNECTOR_OUTPUTS = ("TorqueLocal", "ForceLocal", "Force")
+_CONNECTOR_INPUTS = ("Rotation", "Distance", "Displacement")
+
+
+def _callable(value: Any) -> bool:
+    if isinstance(value, dict):  # Exudyn keeps it as {'function': f, 'type': 'Python'}
+        value = value.get("function")
+    return callable(value)
+
+
+def user_connector_values(mbs: Any, api: dict[str, Any], objects: list[dict[str, Any]], out: Any
+                          ) -> dict[str, Any]:
+    """What every connector whose force or torque a user function gives applies in the current state,
+    read with Exudyn's own connector outputs (which call the function as the solver does), with the
+    quantity the function was given: a model sees its drives' torques and signs, not only that a
+    function exists. A connector whose outputs raise is named with the exception's type."""
+    values: dict[str, Any] = {}
+    for index, item in enumerate(objects):
+        if not any(key.endswith("UserFunction") and "offset" not in key and _callable(value)
+                   for key, value in item.items()):
+            continue
+        said: dict[str, Any] = {}
+        for key, names in (("value", _CONNECTOR_OUTPUTS), ("input", _CONNECTOR_INPUTS)):
+            for name in names:
+                try:
+                    value = vector(api["GetObjectOutput"](mbs, index, getattr(out, name)))
+                except Exception as exc:
+                    if key == "value" and name == names[-1] and not said:
+                        said["error"] = type(exc).__name__
+                    continue
+                if value is not None:
+                    said[key], said[key + "_name"] = value, name
+                    break
+        if said:
+            values[str(index)] = said
+    return values

@@ -32,6 +32,7 @@ import numpy as np
 from meceng.tools import guard
 from meceng.tools.errors import PROGRAM_NAME, describe_exception
 from meceng.tools.harness import HandOver, Harness, capture_items, capture_sensors, system_summary
+from meceng.tools.pinning import pin_eigensolvers
 
 # ----------------------------------------------------------------------------- main
 
@@ -231,6 +232,7 @@ def enter(job_path: Path) -> int:
         isolate = True
     if isolate:
         os.environ["MECENG_NETWORK"] = unshare_network()
+    pin_eigensolvers()  # the same ARPACK start vector in every child, cold or warm (tools/pinning.py)
     code = run(job_path)
     sys.stdout.flush()
     sys.stderr.flush()

@@ -6,7 +6,10 @@ milliseconds. The fork server only imports: it never meshes or solves, because N
 worker thread behind after meshing and children forked from such a process deadlock when they
 mesh. Each child is still its own session and process group, with the same limits, stripped
 environment, empty network namespace, audit hook and result token as a cold child, and it leaves
-with ``os._exit``.
+with ``os._exit``. The server reaps each child with ``wait4`` and reports its CPU time, which the
+program is graded by (issue 45). The server itself runs under the pinned environment
+(``pinning.PINNED_ENV``): the numerical libraries read their thread counts when the server imports
+them, and the hash seed when it starts, and every child inherits both.
 """
 
 from __future__ import annotations
@@ -21,6 +24,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from meceng.tools.pinning import PINNED_ENV
+
 
 def child_main(job_path: str, env: dict[str, str], limits: dict[str, int]) -> None:
     """Runs in the forked child: become a session leader, limit, isolate, run, leave."""
@@ -28,7 +33,7 @@ def child_main(job_path: str, env: dict[str, str], limits: dict[str, int]) -> No
     try:
         os.setsid()
         resource.setrlimit(resource.RLIMIT_AS, (limits["memory"], limits["memory"]))
-        resource.setrlimit(resource.RLIMIT_CPU, (limits["cpu"], limits["cpu"] + 5))
+        resource.setrlimit(resource.RLIMIT_CPU, (limits["cpu"], limits.get("cpu_hard", limits["cpu"] + 2)))
         resource.setrlimit(resource.RLIMIT_FSIZE, (limits["file"], limits["file"]))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         os.environ.clear()
@@ -52,7 +57,8 @@ class WarmPool:
     """A running fork server. ``await start()`` once, ``await run(...)`` per program, ``close()``."""
 
     def __init__(self, env: dict[str, str] | None = None) -> None:
-        self.env = env
+        # whatever the caller passes, the server's libraries load pinned (see the module's note)
+        self.env = {**(env if env is not None else os.environ), **PINNED_ENV}
         self._dir = tempfile.mkdtemp(prefix="meceng-forkserver-")
         self.socket_path = os.path.join(self._dir, "server.sock")
         self._process: asyncio.subprocess.Process | None = None
@@ -75,9 +81,10 @@ class WarmPool:
             if line.strip() != b"ready":
                 raise RuntimeError("the fork server did not start")
 
-    async def run(self, job_path: Path, env: dict[str, str], limits: dict[str, int], timeout_s: float,
-                  ) -> tuple[int | None, bool]:
-        """Run one job in a forked child; returns (exit code, negative for a signal; timed out?)."""
+    async def run(self, job_path: Path, env: dict[str, str], limits: dict[str, int], wall_s: float,
+                  ) -> tuple[int | None, bool, float | None]:
+        """Run one job in a forked child, stopped after ``wall_s`` seconds on the wall clock; returns
+        (exit code, negative for a signal; stopped by the wall clock?; its CPU seconds, None if unknown)."""
         await self.start()
         reader, writer = await asyncio.open_unix_connection(self.socket_path)
         pid: int | None = None
@@ -85,15 +92,15 @@ class WarmPool:
             writer.write(json.dumps({"job": str(job_path), "env": env, "limits": limits}).encode() + b"\n")
             await writer.drain()
             pid = json.loads(await asyncio.wait_for(reader.readline(), timeout=30))["pid"]
-            timed_out = False
+            wall_killed = False
             try:
-                line = await asyncio.wait_for(reader.readline(), timeout=timeout_s)
+                line = await asyncio.wait_for(reader.readline(), timeout=wall_s)
             except TimeoutError:
-                timed_out = True
+                wall_killed = True
                 _kill_group(pid)
                 line = await asyncio.wait_for(reader.readline(), timeout=30)
-            code = json.loads(line)["exit"] if line else None
-            return code, timed_out
+            ended = json.loads(line) if line else {}
+            return ended.get("exit"), wall_killed, ended.get("cpu_s")
         finally:
             if pid is not None:  # ended, timed out or cancelled: its group dies with it
                 _kill_group(pid)

@@ -1,0 +1,75 @@
+"""Task 405 (level 4): the drop height that sends the upper of two stacked balls to a given height.
+
+The system is task 41's two balls (solid spheres, the light one a small gap above the heavy one
+and slightly offset, penalty contacts with Gonthier / Carvalho-Martins hysteresis damping at the
+floor and between the balls), here with a gap of only 5-20 mm; the drop height (the lower ball's
+start height) is left open. The spec is an extreme: the largest height of the upper ball's centre after it is thrown up.
+
+Why a closed form misses: with the small gap the upper ball arrives while the lower one is still
+pressed into the floor, so the three bodies share one soft impact (the floor pushes through the
+lower ball); no sequence of rigid two-body impacts describes it, and the offset turns part of the
+motion sideways.
+
+Estimate: rigid successive impacts, head-on: the lower ball rebounds from the floor with e times its
+speed, meets the still falling upper ball after gap / ((1 + e) g t_f), and a rigid impact with
+restitution e throws it up; z_max = z_meet + v1'^2 / (2 g), solved for the drop height.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from meceng.tasks.base import Param, SimSettings
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
+
+
+def upper_ball_height(times: np.ndarray, q: np.ndarray, values: dict) -> float:
+    z = q[:, 9]  # ball 1 is the second rigid body: position in columns 7..9
+    rising = np.nonzero(np.diff(z) > 0.0)[0]
+    return float(np.max(z[rising[0]:])) if rising.size else float("nan")
+
+
+def rigid_height(values: dict, height: float) -> float:
+    g, e, m0, m1, gap = (values[k] for k in ("gravity", "restitution", "mass0", "mass1", "gap"))
+    t_f = np.sqrt(2.0 * (height - values["radius0"]) / g)
+    dt = gap / ((1.0 + e) * g * t_f)
+    u0, u1 = e * g * t_f - g * dt, -g * t_f - g * dt
+    z1 = height + values["radius0"] + values["radius1"] + gap - 0.5 * g * (t_f + dt) ** 2
+    v1 = (m0 * u0 * (1.0 + e) + (m1 - e * m0) * u1) / (m0 + m1)
+    return z1 + max(v1, 0.0) ** 2 / (2.0 * g)
+
+
+def estimate(values: dict, target: float) -> dict[str, float]:
+    drops = np.linspace(0.1, 2.0, 19001)
+    heights = np.array([rigid_height(values, h) for h in drops])
+    return {"height": float(drops[np.argmin(np.abs(heights - target))])}
+
+
+TASK = DesignModel(
+    id=405,
+    name="stacked balls drop height",
+    system=STACKED,
+    open_description=STACKED.open_description.replace("[0, 0, {height}] m", "[0, 0, H] m").replace("{height} + r0", "H + r0"),
+    params=(
+        Param("mass0", 0.2, 0.6, "kg"),
+        Param("radius0", 0.05, 0.08, "m"),
+        Param("mass1", 0.02, 0.1, "kg"),
+        Param("radius1", 0.02, 0.04, "m"),
+        Param("gap", 0.005, 0.02, "m", digits=2),
+        Param("offset", 0.002, 0.01, "m", digits=2),
+        Param("stiffness", 2e4, 5e4, "N/m", digits=2),
+        Param("restitution", 0.6, 0.95, "", digits=2),
+        Param("gravity", 9.78, 9.83, "m/s^2", digits=4),
+    ),
+    variables=(DesignVariable("height", 0.3, 0.8, "m", "the start height H of the lower ball's centre"),),
+    spec=Spec("the largest height of the upper ball's centre after it is thrown up", "extreme", "m",
+              upper_ball_height),
+    spec_text="""after the impacts, the upper ball 1 is thrown up; the largest height its centre reaches
+        (z-coordinate, counted from its first upward motion to the end of the simulated time) is
+        {target} m, within ±{tolerance_percent} %.""",
+    estimate=estimate,
+    estimate_text="rigid successive head-on impacts (floor, then ball on ball, restitution e), the "
+                  "meeting point from the gap: h = z_meet + v1'^2/(2 g)",
+    sim=SimSettings(end_time=1.5, steps=15000, extra=STACKED.sim.extra),
+)
