@@ -13,6 +13,8 @@ MAX_SAMPLES = 200
 
 
 def _reads(sensor: dict[str, Any]) -> str:
+    if sensor.get("sensorType") == "UserFunction":
+        return "UserFunction sensor: the values its sensorUserFunction returns"
     what = sensor.get("outputVariableType", "?")
     for key, noun in (("bodyNumber", "body"), ("nodeNumber", "node"), ("markerNumber", "marker"),
                       ("objectNumber", "object"), ("loadNumber", "load")):

@@ -223,11 +223,11 @@ KEY_VARIABLES = {"openai": "OPENAI_API_KEY", "anthropic": "ANTHROPIC_API_KEY"}
 
 def backend_for(model: str, asked: str | None) -> str:
     """The backend a model name needs: ``gold`` and the scripted models (``scripted:p=P``,
-    ``scripted-same:p=P``) answer in this process whatever backend was asked; others take the one
+    ``scripted-same:p=P``, ``designer``) answer in this process whatever backend was asked; others take the one
     asked, Ollama by default."""
     if model == "gold":
         return "gold"
-    if model.startswith("scripted"):
+    if model.startswith("scripted") or model == "designer":
         return "scripted"
     return asked or "ollama"
 
