@@ -8,7 +8,10 @@
 3. scheduler efficiency against a fake Ollama (its own process) with N slots and a fixed latency of
    2 s and 0.5 s: achieved requests/s divided by N / latency, for N = 1, 4, 16, 64, 256;
 4. pipelining: wall time of a run with simulated LLM latency divided by
-   max(LLM-only time, evaluation-only time);
+   max(LLM-only time, evaluation-only time), evaluation only grading exactly as the run grades
+   (behaviour included); beside it, as figures of their own, what behaviour adds per task (the motion
+   recording, the converged ground truth's extra runs, the comparison) and what the preflight costs
+   a run (the run is timed without it);
 5. server scale (``bench_scale.py``): a 1000-task level 1-2 run against a 64-slot server with
    realistic latencies, its wall over its LLM-only time, the harness's CPU per task and peak memory;
 6. the harness's CPU per request through the OpenAI backend against a real server (llama.cpp's,
@@ -48,14 +51,17 @@ from fake_ollama import FakeOllama, chat_reply
 from meceng.agents.prompts import gold_code, gold_selection
 from meceng.agents.steps import choose_components, generate_code
 from meceng.catalog.catalogs import rigid_catalog
+from meceng.eval.behaviour import compare_behaviour, tolerance_for
 from meceng.eval.chain import Tolerances
 from meceng.llm.backend_ollama import OllamaBackend
 from meceng.llm.types import LLMSettings
 from meceng.pipeline import Evaluator, RunSettings, run_benchmark
 from meceng.pipeline.grading import GradingPool
+from meceng.pipeline.preflight import check_stack
 from meceng.tasks.registry import default_registry
 from meceng.tools.execution import ExecutionLimits
 from meceng.tools.executor import child_env, execute
+from meceng.tools.recording import MOTION_SAMPLES
 from meceng.tools.warm import WarmPool
 
 FIRST_TWELVE = ("1", "2", "3", "4", "9", "11", "12", "19", "23", "29", "35", "43")
@@ -234,6 +240,56 @@ async def throughput(variations: int, rounds: int = 3) -> dict[str, Any]:
             "scaling_over_programs": median("over_programs"), "samples": rows}
 
 
+async def behaviour_cost(instances: list[Any]) -> dict[str, float]:
+    """What behaviour adds to grading, per task, on one worker (the programs one after another on the
+    warm fork server, so each figure is one program's wall): the child's recording of every body's
+    motion (the ground truth with and without it), the converged ground truth's runs beyond the
+    nominal one (at least the run with twice the steps; once per instance, then in the reference
+    store) and the comparison in the parent."""
+    pool = WarmPool(child_env())
+    await pool.start()
+    evaluator = Evaluator(1, ExecutionLimits(), Tolerances(), rigid_catalog(), pool)
+    plain_s = recorded_s = converged_s = compare_s = 0.0
+    try:
+        for instance in instances:
+            plain = ExecutionLimits(inspect_times=(instance.sim.end_time,))
+            t0 = time.perf_counter()
+            await execute(instance.reference_program, instance.sim.block(), plain, check=False, pool=pool)
+            plain_s += time.perf_counter() - t0
+            t0 = time.perf_counter()
+            truth = await evaluator.references.get(instance)
+            recorded_s += time.perf_counter() - t0
+            t0 = time.perf_counter()
+            await evaluator.converged.get(instance)
+            converged_s += time.perf_counter() - t0
+            t0 = time.perf_counter()
+            compare_behaviour(truth.motion, truth.motion, tolerance_for(instance.slug))
+            compare_s += time.perf_counter() - t0
+    finally:
+        await pool.close()
+    n = len(instances)
+    return {"tasks": n, "motion_samples": MOTION_SAMPLES, "run_ms": 1000 * plain_s / n,
+            "recording_ms": 1000 * (recorded_s - plain_s) / n, "converged_truth_ms": 1000 * converged_s / n,
+            "comparison_ms": 1000 * compare_s / n}
+
+
+async def preflight_cost(instances: list[Any], cores: int) -> float:
+    """The preflight a run makes before its first request (the probe program and the cheapest ground
+    truth of each kind), on a fresh fork server and grading pool as a run's: seconds per run."""
+    pool = WarmPool(child_env())
+    grading = GradingPool(cores)
+    evaluator = Evaluator(cores, ExecutionLimits(), Tolerances(), rigid_catalog(), pool, grading=grading)
+    try:
+        t0 = time.perf_counter()
+        checks = await check_stack(instances, evaluator)
+        wall = time.perf_counter() - t0
+    finally:
+        await pool.close()
+        grading.close()
+    assert all(c.ok for c in checks), [c for c in checks if not c.ok]
+    return wall
+
+
 async def pipelining(latency: float, variations: int) -> dict[str, float]:
     registry = default_registry()
     models = registry.select(None, FIRST_TWELVE)
@@ -266,27 +322,35 @@ async def pipelining(latency: float, variations: int) -> dict[str, float]:
         eval_time = await _evaluate_all(instances, cores)
         with tempfile.TemporaryDirectory() as out:
             settings = RunSettings(llm=llm, only=FIRST_TWELVE, variations=variations, seed=2000, out=Path(out),
-                                   run_name="bench", workers=cores, progress=False)
+                                   run_name="bench", workers=cores, progress=False, preflight=False)
             t0 = time.perf_counter()
             run_json = await run_benchmark(settings)
             wall = time.perf_counter() - t0
             overall = json.loads(run_json.read_text())["summary"]["rates"]["overall"]
     assert overall == 1.0
-    return {"llm_only_s": llm_time, "evaluation_only_s": eval_time, "pipelined_s": wall,
-            "pipelining_ratio": wall / max(llm_time, eval_time)}
+    preflight_s = await preflight_cost(instances, cores)
+    behaviour = await behaviour_cost(instances)
+    return {"tasks": len(instances), "llm_only_s": llm_time, "evaluation_only_s": eval_time, "pipelined_s": wall,
+            "pipelining_ratio": wall / max(llm_time, eval_time), "preflight_s": preflight_s,
+            "behaviour": behaviour}
+
+
+def stamp(t0: float) -> str:
+    """The bench's own time so far, before each figure: which section costs the run its minutes."""
+    return f"[{time.perf_counter() - t0:5.0f} s] "
 
 
 async def main_async(quick: bool) -> dict[str, object]:
     results: dict[str, object] = {}
     t0 = time.perf_counter()
     iso = await isolation_overhead(5 if quick else 15)
-    print(f"1. isolation overhead (median per program): empty program cold {iso['empty_cold_ms']:.0f} ms, "
+    print(stamp(t0) + f"1. isolation overhead (median per program): empty program cold {iso['empty_cold_ms']:.0f} ms, "
           f"warm {iso['empty_warm_ms']:.1f} ms -> cold/warm {iso['cold_over_warm_overhead']:.1f}x; "
           f"L1 task cold {iso['l1_task_cold_ms']:.0f} ms, warm {iso['l1_task_warm_ms']:.1f} ms "
           f"-> {iso['l1_cold_over_warm']:.1f}x", flush=True)
     tp = await throughput(2 if quick else 8, 1 if quick else 5)
     cores = tp["cores"]
-    print(f"2. evaluation throughput ({tp['tasks']} gold tasks, median of {tp['rounds']} rounds): 1 core "
+    print(stamp(t0) + f"2. evaluation throughput ({tp['tasks']} gold tasks, median of {tp['rounds']} rounds): 1 core "
           f"{tp['tasks_per_s_1core']:.2f} tasks/s, {cores} cores {tp[f'tasks_per_s_{cores}cores']:.2f} tasks/s -> "
           f"scaling {tp['scaling_all_cores']:.2f}x; in the same rounds the machine gives {tp['hardware_scaling']:.2f}x "
           f"for a pure-CPU loop and {tp['programs_scaling']:.2f}x for the same programs without the harness -> "
@@ -297,20 +361,27 @@ async def main_async(quick: bool) -> dict[str, object]:
         sched[f"{latency:g}s"] = await asyncio.to_thread(
             bench_scale.scheduler_efficiency, latency, (1, 4, 16, 64, 256), 3 if quick else 10)
         figures = sched[f"{latency:g}s"]
-        print(f"3. scheduler efficiency at {latency:g} s latency (achieved req/s / (N / latency) after a first wave "
+        print(stamp(t0) + f"3. scheduler efficiency at {latency:g} s latency (achieved req/s / (N / latency) "
+              "after a first wave "
               "that opens the connections, server in its own process): "
               + ", ".join(f"N={n}: {v:.3f}" for n, v in figures["efficiency"].items())
               + "; the first wave's set-up: "
               + ", ".join(f"{v:.2f} s" for v in figures["first_wave_extra_s"].values()), flush=True)
     pipe = await pipelining(latency=0.15, variations=1 if quick else 3)
-    print(f"4. pipelining: LLM only {pipe['llm_only_s']:.1f} s, evaluation only {pipe['evaluation_only_s']:.1f} s, "
-          f"pipelined run {pipe['pipelined_s']:.1f} s -> ratio {pipe['pipelining_ratio']:.2f}", flush=True)
+    b = pipe["behaviour"]
+    print(stamp(t0) + f"4. pipelining ({pipe['tasks']} tasks): LLM only {pipe['llm_only_s']:.1f} s, "
+          "evaluation only (behaviour "
+          f"included) {pipe['evaluation_only_s']:.1f} s, pipelined run {pipe['pipelined_s']:.1f} s -> ratio "
+          f"{pipe['pipelining_ratio']:.2f}; the run's preflight, timed on its own: {pipe['preflight_s']:.1f} s a run; "
+          f"behaviour per task (one worker): the ground truth {b['run_ms']:.0f} ms, its motion recording "
+          f"+{b['recording_ms']:.0f} ms, the converged ground truth's runs +{b['converged_truth_ms']:.0f} ms (once "
+          f"per instance), the comparison {b['comparison_ms']:.1f} ms", flush=True)
     scale_args = bench_scale.build_parser().parse_args(["--variations", "2" if quick else "20"])
-    print("5. server scale:", flush=True)
+    print(stamp(t0) + "5. server scale:", flush=True)
     scale = await asyncio.to_thread(bench_scale.server_scale, scale_args)
-    print("5. " + bench_scale.report(scale), flush=True)
+    print(stamp(t0) + "5. " + bench_scale.report(scale), flush=True)
     real = await asyncio.to_thread(bench_real_server.real_server_overhead, 12 if quick else 24)
-    print("6. " + bench_real_server.report(real), flush=True)
+    print(stamp(t0) + "6. " + bench_real_server.report(real), flush=True)
     results.update(
         cold_over_warm_overhead=iso["cold_over_warm_overhead"], scaling_all_cores=tp["scaling_all_cores"],
         hardware_scaling=tp["hardware_scaling"], scaling_over_hardware=tp["scaling_over_hardware"],
@@ -322,25 +393,26 @@ async def main_async(quick: bool) -> dict[str, object]:
         details={"isolation": iso, "throughput": tp, "pipelining": pipe},
         bench_wall_s=time.perf_counter() - t0,
     )
-    results["farm"] = await farm_figures(quick)
+    results["farm"] = await farm_figures(quick, t0)
     results["bench_wall_s"] = time.perf_counter() - t0
     print(f"bench finished in {results['bench_wall_s']:.0f} s")
     return results
 
 
-async def farm_figures(quick: bool) -> dict[str, object]:
+async def farm_figures(quick: bool, t0: float) -> dict[str, object]:
     """7-9: a sweep of 4 models on 4 servers, the reference store, rescore with and without the
     grading pool (``bench_farm.py``)."""
     cores = os.cpu_count() or 1
     conc = await bench_farm.concurrency(1.0, 1, cores)
-    print(f"7. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
+    print(stamp(t0) + f"7. sweep: 4 models on 4 one-slot servers (1 s a request) -> sweep wall / longest single run "
           f"{conc['sweep_over_longest_run']:.3f}", flush=True)
     store = await bench_farm.store_cpu(1, cores)
-    print(f"8. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
+    print(stamp(t0) + f"8. reference store: level-3a evaluation CPU of a 4-model sweep with / without the store "
           f"{store['store_cpu_ratio']:.3f} (floor {store['floor_new_store']:.3f}); with the store a sweep filled "
           f"{store['filled_store_cpu_ratio']:.3f} (floor {store['floor_filled_store']:.3f})", flush=True)
     rescore = await bench_farm.rescore_figures(2 if quick else 20, cores)
-    print(f"9. rescore of a {rescore['tasks']}-task run: before (cold interpreters, grading on the parent's "
+    print(stamp(t0) + f"9. rescore of a {rescore['tasks']}-task run: before (cold interpreters, grading on the "
+          "parent's "
           f"threads) {rescore['before_s']:.0f} s, now (fork server, grading pool) {rescore['now_s']:.0f} s", flush=True)
     return {"sweep_over_longest_run": conc["sweep_over_longest_run"], "store_cpu_ratio": store["store_cpu_ratio"],
             "rescore": rescore, "details": {"sweep": conc, "store": store}}
