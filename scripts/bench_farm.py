@@ -55,8 +55,9 @@ def _jobs(out: Path, urls: list[str], only: tuple[str, ...], levels: tuple[str, 
     return jobs
 
 
-async def concurrency(latency: float, variations: int, workers: int) -> dict[str, Any]:
-    """Each model alone, then all together, against 4 servers of one slot each."""
+async def concurrency(latency: float, variations: int, workers: int, singles: int = MODELS) -> dict[str, Any]:
+    """Each model alone (the first ``singles`` of them: the runs are alike but for their server),
+    then all together, against 4 servers of one slot each."""
     registry = default_registry()
     instances = registry.instances(registry.select(None, RIGID), 0, variations)
 
@@ -75,7 +76,7 @@ async def concurrency(latency: float, variations: int, workers: int) -> dict[str
         urls = [s.url for s in servers]
         single = []
         with tempfile.TemporaryDirectory() as out:
-            for job in _jobs(Path(out), urls, RIGID, ("1", "2"), variations, workers):
+            for job in _jobs(Path(out), urls, RIGID, ("1", "2"), variations, workers)[:singles]:
                 t0 = time.perf_counter()
                 await run_sweep([job], workers, display=False)
                 single.append(time.perf_counter() - t0)
@@ -99,16 +100,16 @@ def _cpu() -> float:
     return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
-async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
-    """CPU seconds of a 4-model level-3a gold sweep without the reference store, with a new store,
-    and once more with the store the second sweep filled (a later sweep writing to the same place).
-    The fork server is waited for when a sweep ends, so its programs' CPU is counted."""
+async def store_cpu(variations: int, workers: int, parts: tuple[str, ...] = PARTS) -> dict[str, Any]:
+    """CPU seconds of a 4-model level-3a gold sweep of ``parts`` without the reference store, with a
+    new store, and once more with the store the second sweep filled (a later sweep writing to the
+    same place). The fork server is waited for when a sweep ends, so its programs' CPU is counted."""
     figures: dict[str, Any] = {}
     with tempfile.TemporaryDirectory() as scratch:
         store = Path(scratch) / "references"
         for label, use_store in (("without", False), ("with", True), ("filled", True)):
             with tempfile.TemporaryDirectory() as out:
-                jobs = _jobs(Path(out), [""] * MODELS, PARTS, ("3a",), variations, workers)
+                jobs = _jobs(Path(out), [""] * MODELS, parts, ("3a",), variations, workers)
                 cpu, t0 = _cpu(), time.perf_counter()
                 results = await run_sweep(jobs, workers, store=store if use_store else None, display=False)
                 figures[f"{label}_store_cpu_s"] = _cpu() - cpu
@@ -118,7 +119,7 @@ async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
                 figures[f"{label}_store_verdicts"] = verdicts
     assert figures["with_store_verdicts"] == figures["without_store_verdicts"] == figures["filled_store_verdicts"], \
         "the store changed a verdict"
-    figures["tasks"] = MODELS * len(PARTS) * variations
+    figures["tasks"] = MODELS * len(parts) * variations
     figures["store_cpu_ratio"] = figures["with_store_cpu_s"] / figures["without_store_cpu_s"]
     figures["filled_store_cpu_ratio"] = figures["filled_store_cpu_s"] / figures["without_store_cpu_s"]
     # each model's program costs what its reference costs (gold): M candidates and 1 reference
@@ -128,10 +129,15 @@ async def store_cpu(variations: int, workers: int) -> dict[str, Any]:
     return figures
 
 
-async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
-    """A gold level 1-2 run (20 variations: 1,000 tasks), rescored as before this issue (a cold
-    interpreter a program, grading on the parent's threads), with the fork server alone, and as now
-    (the fork server and the grading pool); wall and the parent's own CPU a task."""
+RESCORES = (("before", "subprocess", False), ("fork_threads", "fork", False), ("now", "fork", True))
+
+
+async def rescore_figures(variations: int, workers: int, passes: tuple[str, ...] = ("before", "fork_threads", "now")
+                          ) -> dict[str, Any]:
+    """A gold level 1-2 run (``variations`` a task model: 50 tasks each), rescored as before this
+    issue (a cold interpreter a program, grading on the parent's threads), with the fork server alone,
+    and as now (the fork server and the grading pool), the ``passes`` named; wall and the parent's
+    own CPU a task."""
     figures: dict[str, Any] = {}
     with tempfile.TemporaryDirectory() as out:
         llm = LLMSettings(model="gold", backend="gold")
@@ -139,8 +145,7 @@ async def rescore_figures(variations: int, workers: int) -> dict[str, Any]:
                                progress=False)
         run_json = await run_benchmark(settings)
         figures["tasks"] = len(json.loads(run_json.read_text())["tasks"])
-        for label, executor, pool in (("before", "subprocess", False), ("fork_threads", "fork", False),
-                                      ("now", "fork", True)):
+        for label, executor, pool in (r for r in RESCORES if r[0] in passes):
             own, t0 = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
             await rescore(run_json.parent, workers=workers, grading_pool=pool, executor=executor)
             wall = time.perf_counter() - t0
