@@ -124,6 +124,7 @@ def test_through_the_loop_its_estimate_misses_and_its_corrected_value_meets_the_
     assert design["values"]["torque"] != instance().design.gold["torque"]
 
 
+@pytest.mark.slow  # a second whole run (~40 s); the loop's run above covers the default suite
 def test_without_tools_it_answers_the_estimate_the_task_models_check_measures(tmp_path: Path) -> None:
     from meceng.tasks.design_check import check_estimate
 
