@@ -17,6 +17,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from meceng.eval.agreement import finite_head
 from meceng.eval.bodies import (
     TRAVEL_FLOOR,
     BodyMotion,
@@ -36,20 +37,6 @@ Sources = Callable[[list[BodyMotion]], list[ScaleSource]]
 
 def _same(a: float, b: float) -> bool:
     return bool(np.isfinite(a) and np.isfinite(b) and abs(a - b) <= 1e-9 * max(abs(a), abs(b), 1e-300))
-
-
-def _finite(bodies: list[BodyMotion]) -> list[BodyMotion]:
-    """The bodies' samples up to the first non-finite state (as the comparison takes its scales)."""
-    n = min((len(b.t) for b in bodies), default=0)
-    for b in bodies:
-        bad = ~np.all(np.isfinite(b.p[:n]) & np.isfinite(b.v[:n]), axis=1)
-        if b.w is not None:
-            bad |= ~np.all(np.isfinite(b.w[:n]), axis=1)
-        if bad.any():
-            n = min(n, int(np.argmax(bad)))
-    n = max(n, 1)
-    return [BodyMotion(b.index, b.kind, b.mass, b.principal, b.axes, b.t[:n], b.p[:n], b.v[:n],
-                       None if b.w is None else b.w[:n], None) for b in bodies]
 
 
 def _words(source: ScaleSource, side: str, bodies: list[BodyMotion], label: Label) -> str:
@@ -74,7 +61,7 @@ def _words(source: ScaleSource, side: str, bodies: list[BodyMotion], label: Labe
 def _source(value: float, sides: dict[str, list[BodyMotion]], label: Label, sources: Sources) -> str | None:
     for side, bodies in sides.items():
         if bodies:
-            finite = _finite(bodies)
+            finite = finite_head(bodies)
             found = sources(finite)
             if found and _same(largest(found).value, value):
                 return _words(largest(found), side, finite, label)
@@ -86,7 +73,7 @@ def fastest_centre(sides: dict[str, list[BodyMotion]], label: Label) -> str | No
     be read against."""
     best: tuple[float, str] | None = None
     for side, bodies in sides.items():
-        for b in _finite(bodies) if bodies else []:
+        for b in finite_head(bodies) if bodies else []:
             if len(b.v):
                 speed = float(np.max(np.linalg.norm(b.v, axis=1)))
                 if best is None or speed > best[0]:

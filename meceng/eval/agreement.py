@@ -91,8 +91,9 @@ def _head(bodies: list[BodyMotion], n: int) -> list[BodyMotion]:
             for b in bodies]
 
 
-def _finite_scales(bodies: list[BodyMotion]) -> Scales:
-    """A body's scales from its samples up to its first non-finite state (a program that blew up)."""
+def finite_head(bodies: list[BodyMotion]) -> list[BodyMotion]:
+    """The bodies' samples up to the first non-finite state of any of them (a program that blew up):
+    what the scales are taken from."""
     n = min((len(b.t) for b in bodies), default=0)
     for b in bodies:
         bad = ~np.all(np.isfinite(b.p[:n]) & np.isfinite(b.v[:n]), axis=1)
@@ -100,7 +101,11 @@ def _finite_scales(bodies: list[BodyMotion]) -> Scales:
             bad |= ~np.all(np.isfinite(b.w[:n]), axis=1)
         if bad.any():
             n = min(n, int(np.argmax(bad)))
-    return scales(_head(bodies, max(n, 1)))
+    return _head(bodies, max(n, 1))
+
+
+def _finite_scales(bodies: list[BodyMotion]) -> Scales:
+    return scales(finite_head(bodies))
 
 
 def _end(bodies: list[BodyMotion]) -> float | None:
