@@ -100,6 +100,7 @@ def test_gold_assemblies_pass_and_a_failed_part_stops_its_assembly(tmp_path: Pat
     assert np.isclose(levels["3b"]["rates"]["overall"], 0.5)
 
 
+@pytest.mark.slow  # the part store's sharing and a rescore over a whole 3b run (~160 s)
 def test_a_part_used_twice_is_made_once_and_rescoring_keeps_the_verdicts(tmp_path: Path) -> None:
     """Two identical bearing blocks: one part task, loaded into both slots; rescore grades parts and
     assembly again (with the assembly's master values and the saved parts) and agrees."""

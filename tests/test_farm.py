@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import pytest
 from fake_ollama import FakeOllama, chat_reply, prompted_instance
 from records import normalized
 
@@ -133,6 +134,7 @@ def lines(folder: Path) -> int:
     return sum(p.read_bytes().count(b"\n") for p in folder.glob("*/journal.jsonl"))
 
 
+@pytest.mark.slow  # a sweep killed and resumed twice (~80 s); test_resume.py keeps a killed run in the default run
 def test_a_killed_or_interrupted_sweep_resumes_every_run(tmp_path: Path) -> None:
     straight = start_sweep(tmp_path / "straight")
     assert straight.wait(timeout=600) == 0, straight.stderr.read() if straight.stderr else ""

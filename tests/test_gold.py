@@ -65,6 +65,7 @@ def gold_open_run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict]
     return out / "gold-open", json.loads((out / "gold-open" / "run.json").read_text())
 
 
+@pytest.mark.slow  # one gold run over every open text at four seeds (~170 s)
 @pytest.mark.timeout(1200)
 @pytest.mark.parametrize("slug", [m.slug for m in _open_models()])
 def test_gold_passes_behaviour_on_every_open_text_at_four_seeds(gold_open_run: tuple[Path, dict], slug: str) -> None:
