@@ -62,3 +62,38 @@ def test_the_ball_sinks_into_the_net_as_deep_as_its_energy_allows() -> None:
     lowest = int(np.argmin(ball_z))
     assert abs(ball_z[lowest + 1] - ball_z[lowest - 1]) / (2 * (times[1] - times[0])) < 0.05 * v["velocity"]
     assert task.measure(times, q, design) == pytest.approx(task.target, rel=1e-3)
+
+
+def test_the_top_string_carries_more_than_the_chain_s_weight_and_starts_unstretched() -> None:
+    task = _design("chain_springs_top_stretch")
+    v, design = task.values, task.gold
+    times, q = simulate(task.program(design))
+    assert np.hypot(q[0, 0], q[0, 1]) - v["length"] == pytest.approx(0.0, abs=1e-4)  # mass 1, unstretched
+    # swinging through the bottom, the top string holds the whole chain's weight and its centrifugal pull
+    weight_stretch = int(v["n_masses"]) * v["mass"] * v["gravity"] / design["stiffness"]
+    assert task.measure(times, q, design) > weight_stretch
+
+
+def test_the_ball_rebounds_no_higher_than_its_energy_allows() -> None:
+    task = _design("net_ball_rebound_height")
+    design = task.gold
+    times, q = simulate(task.program(design))
+    rise = task.measure(times, q, design)
+    # energy: v0^2/(2g) above the start, the start 0.05 m above the net; the contacts and the net keep some
+    ceiling = 0.05 + design["velocity"] ** 2 / (2 * 9.81)
+    assert 0.0 < rise < ceiling
+    assert rise == pytest.approx(task.target, rel=1e-3)
+
+
+def test_a_strongly_pretensioned_chain_reaches_its_lowest_point_half_a_linear_period_after_release() -> None:
+    """In the linear limit (pretension 20 %, no damping) the chain's mean height is its first bead-string
+    mode: released at the top of its swing, it is lowest half a period later; the measure reads it."""
+    model = default_registry().get("chain_first_lowest_time")
+    task = _design("chain_first_lowest_time")
+    v = {**task.values, "length_ratio": 0.8, "damping": 0.0}
+    k = 3000.0
+    times, q = simulate(model.program(v, {"stiffness": k}, "linear limit"))
+    n = int(v["n_masses"])
+    h = v["span"] / (n + 1)
+    w = 2 * np.sqrt(k * 0.2 * h / (v["mass"] * h)) * np.sin(np.pi / (2 * (n + 1)))
+    assert model.spec.measure(times, q, {**v, "stiffness": k}) == pytest.approx(np.pi / w, rel=0.03)
