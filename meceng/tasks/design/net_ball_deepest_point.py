@@ -28,10 +28,14 @@ from meceng.tasks.grid_mesh_and_large_sphere_impact import TASK as NET
 START_GAP = 0.05  # the ball's lowest point starts this high above the net (task 45)
 
 
-def ball_depth(times: np.ndarray, q: np.ndarray, values: dict) -> float:
+def ball_height(q: np.ndarray, values: dict) -> np.ndarray:
+    """The z-coordinate of the ball's centre per step: the ball is the point mass after the n x n nodes."""
     n = int(values["n"])
-    z = q[:, 3 * n * n + 2]  # the ball is the point mass after the n x n nodes
-    return float(values["sphere_radius"] - np.min(z))
+    return q[:, 3 * n * n + 2]
+
+
+def ball_depth(times: np.ndarray, q: np.ndarray, values: dict) -> float:
+    return float(values["sphere_radius"] - np.min(ball_height(q, values)))
 
 
 def _centre_compliance(n: int, spacing: float, tension: float) -> float:

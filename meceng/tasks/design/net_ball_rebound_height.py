@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import SimSettings
-from meceng.tasks.design.net_ball_deepest_point import START_GAP
+from meceng.tasks.design.net_ball_deepest_point import START_GAP, ball_height
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
 from meceng.tasks.grid_mesh_and_large_sphere_impact import TASK as NET
 
@@ -30,8 +30,7 @@ G = 9.81
 
 
 def rebound_height(times: np.ndarray, q: np.ndarray, values: dict) -> float:
-    n = int(values["n"])
-    z = q[:, 3 * n * n + 2]  # the ball is the point mass after the n x n nodes
+    z = ball_height(q, values)
     after = int(np.argmin(z))
     return float(np.max(z[after:]) - values["sphere_radius"]) if after < len(z) - 1 else float("nan")
 
