@@ -22,7 +22,7 @@ from meceng.tasks.design_measures import first_crossing, mean_period, settling_t
 from meceng.tasks.registry import default_registry
 
 RANGES = {"torque": (1.0, 4.0)}
-GOLD = "crank_first_revolution"
+GOLD = "flying_bars_late_gap"
 
 
 def test_design_literal_is_read_with_its_names_and_ranges() -> None:
@@ -133,14 +133,14 @@ def test_gold_passes_and_the_sandbox_measures_the_target_measured_here(tmp_path:
 def test_a_missed_spec_a_changed_system_and_a_second_simulation_fail_at_their_stages(tmp_path: Path) -> None:
     instance = default_registry().get(GOLD).instance(2)
     gold = instance.reference_program
-    literal = f"DESIGN = {{'torque': {instance.design.gold['torque']!r}}}"
+    literal = f"DESIGN = {{'stiffness': {instance.design.gold['stiffness']!r}}}"
     assert literal in gold
-    missed = gold.replace(literal, "DESIGN = {'torque': 2.5}")
+    missed = gold.replace(literal, "DESIGN = {'stiffness': 500.0}")
     status, data = _evaluate(GOLD, 2, missed, tmp_path)
     assert status == 1 and data["first_failure"] == "design_met" and not data["design"]["passed"]
     assert data["design"]["margin"] < 0
-    # the spec met by another system: the declared value is right, the program runs a different torque
-    other = gold.replace("torque = DESIGN['torque']", "torque = 1.1 * DESIGN['torque']")
+    # the spec met by another system: the declared value is right, the program runs a different stiffness
+    other = gold.replace("stiffness = DESIGN['stiffness']", "stiffness = 1.1 * DESIGN['stiffness']")
     status, data = _evaluate(GOLD, 2, other, tmp_path)
     assert status == 1 and data["first_failure"] == "behaviour_match" and data["design"]["passed"]
     twice = gold + "mbs.SolveDynamic(simulationSettings)\n"
@@ -153,10 +153,10 @@ def test_tasks_show_json_carries_the_design_block() -> None:
                           capture_output=True, text=True, timeout=300)
     design = json.loads(done.stdout)["design"]
     model = default_registry().get(GOLD)
-    assert design["variables"] == {v.name: [v.low, v.high] for v in model.variables} == {"torque": design[
-        "variables"]["torque"]}
-    assert design["system"] == "slider_crank_rigid_bodies"
-    assert design["spec"]["kind"] == "event_time" and design["spec"]["relative_tolerance"] == 0.01
+    assert design["variables"] == {v.name: [v.low, v.high] for v in model.variables} == {"stiffness": design[
+        "variables"]["stiffness"]}
+    assert design["system"] == "spring_coupled_flying_rigid_bodies"
+    assert design["spec"]["kind"] == "extreme" and design["spec"]["relative_tolerance"] == 0.01
     assert design["estimate"]["passed"] is False and design["estimate"]["error_in_tolerances"] > 1
 
 
@@ -166,11 +166,11 @@ def test_simulate_reads_the_programs_sensors_but_never_the_target() -> None:
 
     instance = default_registry().get(GOLD).instance(2)
     program = instance.reference_program.replace("mbs.Assemble()", (
-        "mbs.AddSensor(SensorBody(bodyNumber=oCrank, outputVariableType=exu.OutputVariableType.AngularVelocity,"
+        "mbs.AddSensor(SensorBody(bodyNumber=oBody1, outputVariableType=exu.OutputVariableType.AngularVelocity,"
         " storeInternal=True))\nmbs.Assemble()"))
     answer = asyncio.run(Toolbox(instance, rigid_catalog()).call(
         "simulate", {"code": program, "sensor_window": [0.0, 0.1], "sensor_samples": 5})).text
-    assert "Body sensor: AngularVelocity of body #1" in answer and "window 0 to 0.1 s, 5 times" in answer
+    assert "Body sensor: AngularVelocity of body #0" in answer and "window 0 to 0.1 s, 5 times" in answer
     rows = [line for line in answer.splitlines() if line.startswith("  0.1, ")]
     assert rows, answer[-800:]
     assert str(instance.design.target) not in answer and "target" not in answer.lower()

@@ -19,7 +19,7 @@ from meceng.llm.backend_designer import PROBE_NAME, DesignerBackend, DesignPlan,
 from meceng.llm.types import ChatRequest
 from meceng.tasks.registry import default_registry
 
-SLUG = "crank_first_revolution"
+SLUG = "flying_bars_late_gap"
 
 
 def instance(seed: int = 5):
@@ -57,12 +57,12 @@ def test_sensor_table_reads_the_probes_rows_back_from_a_simulate_answer() -> Non
 
 def test_its_programs_declare_its_values_and_measure_only_while_it_measures() -> None:
     gold = instance().reference_program
-    trying = program_with(f"```python\n{gold}\n```", {"torque": 2.5}, probe=True)
-    assert [line for line in trying.splitlines() if line.startswith("DESIGN = ")] == ['DESIGN = {"torque": 2.5}']
+    trying = program_with(f"```python\n{gold}\n```", {"stiffness": 2500.0}, probe=True)
+    assert [line for line in trying.splitlines() if line.startswith("DESIGN = ")] == ['DESIGN = {"stiffness": 2500.0}']
     assert trying.index(PROBE_NAME) < trying.index("mbs.Assemble()")
-    answer = program_with(gold, {"torque": 2.5}, probe=False)
-    assert PROBE_NAME not in answer and 'DESIGN = {"torque": 2.5}' in answer
-    assert str(instance().design.gold["torque"]) not in answer.split("DESIGN = ")[1].splitlines()[0]
+    answer = program_with(gold, {"stiffness": 2500.0}, probe=False)
+    assert PROBE_NAME not in answer and 'DESIGN = {"stiffness": 2500.0}' in answer
+    assert str(instance().design.gold["stiffness"]) not in answer.split("DESIGN = ")[1].splitlines()[0]
 
 
 def test_the_next_value_comes_from_the_estimates_sensitivity_then_the_secant() -> None:
@@ -117,11 +117,11 @@ def run_designer(tmp_path: Path, agent: str) -> dict:
 def test_through_the_loop_its_estimate_misses_and_its_corrected_value_meets_the_requirement(tmp_path: Path) -> None:
     record = run_designer(tmp_path, "loop")
     agent, design = record["agent"], record["design"]
-    assert agent["first_design"]["passed"] is False  # the estimate alone (seed 5: 11.7 % early)
+    assert agent["first_design"]["passed"] is False  # the estimate alone (24 tolerances off)
     assert design["passed"] is True and record["overall"] is True, design
     calls = agent["tool_calls"].get("simulate", 0)
     assert 2 <= calls <= 5, agent["tool_calls"]
-    assert design["values"]["torque"] != instance().design.gold["torque"]
+    assert design["values"]["stiffness"] != instance().design.gold["stiffness"]
 
 
 @pytest.mark.slow  # a second whole run (~40 s); the loop's run above covers the default suite
@@ -132,4 +132,4 @@ def test_without_tools_it_answers_the_estimate_the_task_models_check_measures(tm
     check = check_estimate(instance())
     assert record["design"]["values"] == pytest.approx(check.design, rel=1e-5)
     assert record["design"]["passed"] is check.passed is False
-    assert np.isclose(record["design"]["value"], check.value, rtol=1e-6)
+    assert np.isclose(record["design"]["value"], check.value, rtol=1e-5)  # the values agree to 1e-5 above

@@ -27,6 +27,7 @@ import numpy as np
 
 from meceng.tasks.base import SimSettings
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_measures import body_axis
 from meceng.tasks.rrr_articulated_robot_with_3d_cubic_trajectory import TASK as RRR
 
 KD_RANGE = (4.0, 30.0)
@@ -53,9 +54,8 @@ def _tip(values: dict, q1: np.ndarray, q2: np.ndarray, q3: np.ndarray) -> np.nda
 
 
 def largest_tip_error(times: np.ndarray, q: np.ndarray, values: dict) -> float:
-    e0, e1, e2, e3 = (q[:, 17 + k] for k in range(4))  # link 3: position 14..16, Euler parameters 17..20
-    axis = np.column_stack([e0**2 + e1**2 - e2**2 - e3**2, 2 * (e1 * e2 + e0 * e3), 2 * (e1 * e3 - e0 * e2)])
-    tip = q[:, 14:17] + 0.5 * values["length3"] * axis
+    # link 3: position in columns 14..16, Euler parameters 17..20, the link along its local x-axis
+    tip = q[:, 14:17] + 0.5 * values["length3"] * body_axis(q, 17, 0)
     angles, _ = _desired(values, times)
     late = times >= 0.5 * values["duration"]
     return float(np.max(np.linalg.norm(tip - _tip(values, *angles), axis=1)[late]))
