@@ -51,14 +51,16 @@ def _reply(model: str, prompt: str, answer: str) -> web.Response:
 
 
 def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, scale: float,
-              fixed_latency: float | None = None) -> web.Application:
+              fixed_latency: float | None = None, only: tuple[str, ...] | None = None,
+              answer_latency: float | None = None) -> web.Application:
     """``fixed_latency``: every request takes exactly that long and is answered 'ok' (for measuring
-    the client's scheduler alone); otherwise the ground truth after a drawn latency."""
+    the client's scheduler alone); otherwise the ground truth of the tasks of ``levels`` among
+    ``only``, after ``answer_latency`` seconds or, when None, a drawn latency."""
     gate = asyncio.Semaphore(slots)
     by_description: list = []
     if fixed_latency is None:
         registry = default_registry()
-        instances = registry.instances(registry.select(levels, None), seed, variations)
+        instances = registry.instances(registry.select(levels, only), seed, variations)
         by_description = sorted(instances, key=lambda i: -len(i.description))
 
     ok = json.dumps(json.loads(_reply("bench", "", "ok").body)).encode()  # type: ignore[arg-type]
@@ -81,7 +83,7 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
             return web.json_response({"error": "unknown task"}, status=400)
         purpose = "select" if "<components>" in prompt else "code"
         async with gate:
-            await asyncio.sleep(latency(purpose, instance.key, scale))
+            await asyncio.sleep(latency(purpose, instance.key, scale) if answer_latency is None else answer_latency)
         answer = (gold_selection(instance.required_components) if purpose == "select"
                   else gold_code(instance.reference_program))
         return _reply(body.get("model", "bench"), prompt, answer)
@@ -94,7 +96,7 @@ def build_app(slots: int, levels: tuple[str, ...], variations: int, seed: int, s
 
 async def serve(args: argparse.Namespace) -> None:
     app = build_app(args.slots, tuple(args.levels.split(",")), args.variations, args.seed, args.scale,
-                    args.fixed_latency)
+                    args.fixed_latency, tuple(args.only.split(",")) if args.only else None, args.latency)
     runner = web.AppRunner(app, access_log=None)
     await runner.setup()
     site = web.TCPSite(runner, "127.0.0.1", args.port, backlog=4096)
@@ -119,6 +121,9 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=3000)
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies every latency")
     parser.add_argument("--fixed-latency", type=float, default=None, help="seconds per request, answer 'ok'")
+    parser.add_argument("--only", default="", help="comma-separated task ids or slugs among --levels")
+    parser.add_argument("--latency", type=float, default=None,
+                        help="seconds per request, answering the ground truth (instead of a drawn latency)")
     asyncio.run(serve(parser.parse_args()))
     return 0
 
