@@ -174,3 +174,10 @@ def test_simulate_reads_the_programs_sensors_but_never_the_target() -> None:
     rows = [line for line in answer.splitlines() if line.startswith("  0.1, ")]
     assert rows, answer[-800:]
     assert str(instance.design.target) not in answer and "target" not in answer.lower()
+    # the extremes say their window, and are taken over every stored step in it, not over the 5 rows shown
+    extremes = next(line for line in answer.splitlines() if line.startswith("  column 2, "))
+    assert "over every stored step from 0 to 0.1 s: largest" in extremes
+    table = [[float(x) for x in line.split(", ")] for line in answer.splitlines()
+             if line.startswith("  0") and line.count(", ") == 3]
+    smallest = float(extremes.split("smallest ")[1].split(" ")[0])
+    assert len(table) == 5 and smallest < min(row[3] for row in table)

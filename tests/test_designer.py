@@ -42,7 +42,7 @@ def test_sensor_table_reads_the_probes_rows_back_from_a_simulate_answer() -> Non
         "  0, 5",
         "  1, 6",
         f"- #1 {PROBE_NAME}: UserFunction sensor: the values its sensorUserFunction returns; stored every 0.001 s",
-        "  column 0: largest 2 at t = 1 s, smallest 0 at t = 0 s",
+        "  column 0, over every stored step from 0 to 1 s: largest 2 at t = 1 s, smallest 0 at t = 0 s",
         "  t, column 0, column 1",
         "  0, 0, -1e-05",
         "  0.5, 1, 2.5",

@@ -56,8 +56,8 @@ def sensor_words(sensors: list[dict[str, Any]] | None, window: tuple[float, floa
         lines.append(f"{head}; stored every {np.median(np.diff(t)):.3g} s")
         for j in range(values.shape[1]):
             col, tt = values[inside, j], t[inside]
-            lines.append(f"  column {j}: largest {col.max():.7g} at t = {tt[col.argmax()]:.6g} s, smallest "
-                         f"{col.min():.7g} at t = {tt[col.argmin()]:.6g} s")
+            lines.append(f"  column {j}, over every stored step from {lo:g} to {hi:g} s: largest {col.max():.7g} at "
+                         f"t = {tt[col.argmax()]:.6g} s, smallest {col.min():.7g} at t = {tt[col.argmin()]:.6g} s")
         lines.append("  t, " + ", ".join(f"column {j}" for j in range(values.shape[1])))
         lines.extend("  " + ", ".join(f"{x:.7g}" for x in row) for row in table)
     return "\n".join(lines)
