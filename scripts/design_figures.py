@@ -2,7 +2,7 @@
 fraction of the allowed range) and the verdict of the engineer's closed-form estimate.
 
     python scripts/design_figures.py                         # every level-4 model, seeds 0-4
-    python scripts/design_figures.py crank_first_revolution --seeds 10
+    python scripts/design_figures.py cradle_restitution_rise --seeds 10
     python scripts/design_figures.py --write                 # keep them in tasks/design/figures.json
     python scripts/design_figures.py --markdown              # the kept figures as docs/design.md's table
 

@@ -2,8 +2,8 @@
 the model gets it: to read the tools as a model does, or to let a person (or a helper answering
 blind) work through the loop by hand.
 
-    python scripts/tool_answer.py crank_first_revolution --seed 5 simulate answer.py
-    python scripts/tool_answer.py crank_first_revolution --seed 5 simulate answer.py \\
+    python scripts/tool_answer.py cradle_restitution_rise --seed 5 simulate answer.py
+    python scripts/tool_answer.py cradle_restitution_rise --seed 5 simulate answer.py \\
         --args '{"sensor_window": [0.2, 0.3], "sensor_samples": 51}'
     python scripts/tool_answer.py single_pendulum --seed 0 --texts open compare a.py --code-b b.py
 """
