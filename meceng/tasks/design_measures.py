@@ -16,6 +16,18 @@ def angle_z(q: np.ndarray, first: int) -> np.ndarray:
     return np.unwrap(2.0 * np.arctan2(e3, e0))
 
 
+def body_axis(q: np.ndarray, first: int, axis: int) -> np.ndarray:
+    """The global direction of a rigid body's local x- (0), y- (1) or z-axis (2) per row (a column of
+    its rotation matrix), its Euler parameters starting at column ``first``."""
+    e0, e1, e2, e3 = (q[:, first + k] for k in range(4))
+    columns = (
+        (e0**2 + e1**2 - e2**2 - e3**2, 2 * (e1 * e2 + e0 * e3), 2 * (e1 * e3 - e0 * e2)),
+        (2 * (e1 * e2 - e0 * e3), e0**2 - e1**2 + e2**2 - e3**2, 2 * (e2 * e3 + e0 * e1)),
+        (2 * (e1 * e3 + e0 * e2), 2 * (e2 * e3 - e0 * e1), e0**2 - e1**2 - e2**2 + e3**2),
+    )
+    return np.column_stack(columns[axis])
+
+
 def first_crossing(times: np.ndarray, signal: np.ndarray, level: float, rising: bool = True) -> float:
     """The first time ``signal`` crosses ``level`` (upwards, or downwards with ``rising=False``),
     interpolated linearly between the two steps around it."""
