@@ -306,13 +306,13 @@ def _machine_cpu_s() -> float:
 async def pipelining(latency: float, variations: int, rounds: int, behaviour_tasks: int) -> dict[str, Any]:
     """A run's wall over max(LLM only, evaluation only), the run without its preflight and both
     starting their fork server and grading pool (a run starts them while its first requests are out:
-    that overlap is part of what the figure measures). The evaluation
-    and the run are measured in ``rounds`` pairs in alternating order, each after a pause: whichever
-    came second in a pair was slower (ratios 1.21 with the run second, 1.05 with it first, minutes
-    apart), the kernel still tearing down the first one's program sandboxes. The figure is the median
-    of the pairs' ratios: on this 2-core VM the same evaluation varies by 10-20 % from one minute to
-    the next (13.4-18.8 s, its CPU seconds by as much), so one slow pair must not be the figure. Beside
-    it, the machine's busy CPU seconds of the run over the evaluation's: what the run adds as work,
+    that overlap is part of what the figure measures). The evaluation and the run are measured in
+    ``rounds`` pairs in alternating order, each after a pause: whichever came second in a pair was
+    slower (ratios 1.21 with the run second, 1.05 with it first, minutes apart; not the kernel's
+    teardown of the programs' network namespaces, ~1 ms of CPU each). The figure is the median of
+    the pairs' ratios: on this 2-core VM the same evaluation varies by 10-20 % from one minute to the
+    next (11-19 s, its CPU seconds by as much), so one slow pair must not be the figure. Beside it,
+    the machine's busy CPU seconds of the run over the evaluation's: what the run adds as work,
     which the wall's noise hides."""
     registry = default_registry()
     models = registry.select(None, FIRST_TWELVE)
