@@ -9,6 +9,7 @@ import asyncio
 import importlib
 import json
 import pickle
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -109,6 +110,20 @@ def test_every_instance_has_a_feasible_gold_design_inside_its_range(model: Desig
         # the text states the target and the range, never the gold design
         assert f"{task.target:g}" in instance.description and "DESIGN = {" in instance.description
         assert pickle.loads(pickle.dumps(instance)).design.target == task.target
+
+
+@pytest.mark.parametrize("model", _design_models(), ids=lambda m: m.slug)
+def test_the_prompt_documents_every_call_and_user_function_the_gold_program_needs(model: DesignModel) -> None:
+    """A reader that knows only the prompt can write the gold program: each ``mbs.CreateX`` and each
+    ``...UserFunction=`` keyword the reference uses is in the code prompt (round 6's readers wrote a
+    cubic spring's and a hardening shaft's user functions from memory)."""
+    from meceng.pipeline import RunSettings, instance_prompts
+
+    text = instance_prompts(model.instance(0), RunSettings(levels=("4",)))[-1].text
+    source = model.model_source()
+    needed = set(re.findall(r"mbs\.(Create\w+)\(", source)) | set(re.findall(r"(\w+UserFunction)=", source))
+    assert needed, source
+    assert {name for name in needed if name not in text} == set()
 
 
 def _evaluate(slug: str, seed: int, program: str, tmp_path: Path) -> tuple[int, dict]:

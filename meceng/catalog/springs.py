@@ -28,6 +28,11 @@ SPRING_DAMPER = Component(
           damping=d))); for separate x, y, z stiffness use CartesianSpringDamper
           (mbs.CreateCartesianSpringDamper(itemNumbers=[oGround, oMass], stiffness=[kx, ky, kz],
           damping=[dx, dy, dz])).
+        - A nonlinear spring law: springForceUserFunction=UFspring, with
+          def UFspring(mbs, t, itemNumber, deltaL, deltaL_t, stiffness, damping, force): return the force
+          along the line (deltaL = L - referenceLength, deltaL_t its rate; stiffness, damping, force are the
+          values given to CreateSpringDamper); it replaces the linear law, e.g.
+          return stiffness*deltaL + k3*deltaL**3 + damping*deltaL_t for a hardening spring.
     """),
     example=rigid_example("""
         # two masses in a chain: ground -- spring 1 -- mass 1 -- spring 2 -- mass 2, along x
@@ -83,6 +88,10 @@ TORSIONAL_SPRING_DAMPER = Component(
         - It constrains nothing: combine it with a RevoluteJoint at the same position and axis, which guides
           the rotation: mbs.CreateRevoluteJoint(itemNumbers=[oGround, oBody], position=[x, y, z], axis=[0, 0, 1]).
         - Only rigid bodies and ground (no mass points).
+        - A nonlinear torque law: springTorqueUserFunction=UFtorque, with
+          def UFtorque(mbs, t, itemNumber, rotation, angularVelocity, stiffness, damping, offset): return the
+          torque (rotation = phi, angularVelocity its rate; stiffness, damping, offset as given); it replaces
+          the linear law, e.g. return stiffness*rotation + k3*rotation**3 + damping*angularVelocity.
     """),
     example=rigid_example("""
         # a disc on a revolute joint about global z with a torsional spring to ground

@@ -138,6 +138,9 @@ class DesignModel:
     model_code: str = ""  # "" : the system's own model code
     sim: SimSettings | None = None  # None: the system's own
     derive: Any = None  # Callable[[dict], dict] | None, as TaskModel.derive
+    #: components the design adds to its system's (a friction or a nonlinear law the system lacks);
+    #: they are required and documented in the prompt like the system's own
+    extra_components: tuple[str, ...] = ()
     #: where in each variable's range the hidden design is drawn (fractions of the range)
     draw: tuple[float, float] = (0.15, 0.85)
     level: str = "4"
@@ -155,7 +158,7 @@ class DesignModel:
 
     @property
     def components(self) -> tuple[str, ...]:
-        return self.system.components
+        return self.system.components + tuple(c for c in self.extra_components if c not in self.system.components)
 
     @property
     def settings(self) -> SimSettings:

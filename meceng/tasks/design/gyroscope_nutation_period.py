@@ -81,10 +81,11 @@ TASK = DesignModel(
     ),
     derive=lambda v: {"pivot_damping": round_significant(_inertias(v)[0] / v["spin_decay_time"], 3)},
     model_code=GYROSCOPE.model_code + """
-        mbs.CreateRigidBodySpringDamper(bodyNumbers=[oGround, oDisc], localPosition0=[0, 0, 0],
+        mbs.CreateRigidBodySpringDamper(itemNumbers=[oGround, oDisc], localPosition0=[0, 0, 0],
                                         localPosition1=[-axle_length, 0, 0], stiffness=np.zeros((6, 6)),
                                         damping=np.diag([0, 0, 0, pivot_damping, pivot_damping, pivot_damping]))
     """,
+    extra_components=("RigidBodySpringDamper",),
     variables=(DesignVariable("spin", 55.0, 120.0, "rad/s", "the initial spin rate omega_s of the disc about its axis"),),
     spec=Spec("the mean nutation period over the first six nutations: the time of the disc centre's sixth "
               "height maximum after the start, divided by six", "period", "s", nutation_period),
