@@ -38,7 +38,7 @@ def ball_depth(times: np.ndarray, q: np.ndarray, values: dict) -> float:
     return float(values["sphere_radius"] - np.min(ball_height(q, values)))
 
 
-def _centre_compliance(n: int, spacing: float, tension: float) -> float:
+def centre_compliance(n: int, spacing: float, tension: float) -> float:
     """Deflection per unit load of the node(s) under the net's centre: the linear out-of-plane
     stiffness of the cable grid under the tension ``tension`` (each spring T/a)."""
     index = {(i, j): (j - 1) * n + (i - 1) for j in range(1, n + 1) for i in range(1, n + 1)}
@@ -62,7 +62,7 @@ def estimate(values: dict, target: float) -> dict[str, float]:
     mass, v0, g = values["sphere_mass"], values["velocity"], 9.81
     energy = 0.5 * mass * v0**2 + mass * g * (START_GAP + target)
     stiffness_needed = 2.0 * energy / target**2  # N/m at the centre
-    per_unit_k = 1.0 / _centre_compliance(int(values["n"]), values["spacing"], values["prestrain"] * values["spacing"])
+    per_unit_k = 1.0 / centre_compliance(int(values["n"]), values["spacing"], values["prestrain"] * values["spacing"])
     return {"spring_stiffness": float(stiffness_needed / per_unit_k)}
 
 
