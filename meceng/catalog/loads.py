@@ -105,6 +105,9 @@ SPHERE_SPHERE_CONTACT = Component(
         - restitutionCoefficient is only used with impactModel=2 (or 1); with the default impactModel=0 it is
           ignored and only the linear contactDamping acts. For a given e use impactModel=2 and
           contactDamping=0.
+        - impactModel=2 (Gonthier / Carvalho-Martins) sets its hysteresis damping so that an isolated impact
+          restitutes exactly e at any impact speed: the normal relative velocity after it is -e times the one
+          before (to 1e-4 for e = 0.6-0.95, 0.5-3 m/s).
         - One contact object per pair of spheres that can touch (e.g. neighbours 0-1, 1-2, 2-3).
         - dynamicFriction > 0 needs rigid bodies; without friction mass points are enough.
         - Contact needs small time steps (about 1e-4 s). Where the solver stops at an impact, set both
@@ -144,7 +147,8 @@ SPHERE_TRIANGLE_CONTACT = Component(
           exu.Vector3DList([...]); a plain list or numpy array is rejected with a type error.
         - Make the triangle large enough to cover where the sphere touches; includeEdges=7 (default) also
           gives contact with the three edges.
-        - restitutionCoefficient needs impactModel=2 (with contactDamping=0); dynamicFriction [-] is optional.
+        - restitutionCoefficient needs impactModel=2 (with contactDamping=0): an isolated impact restitutes e
+          (without other forces), as in SphereSphereContact; dynamicFriction [-] is optional.
         - Use small time steps (about 1e-4 s) for impacts.
     """),
     example=rigid_example(
