@@ -409,7 +409,10 @@ async def main_async(quick: bool) -> dict[str, object]:
               + ", ".join(f"N={n}: {v:.3f}" for n, v in figures["efficiency"].items())
               + "; the first wave's set-up: "
               + ", ".join(f"{v:.2f} s" for v in figures["first_wave_extra_s"].values()), flush=True)
-    pipe = await pipelining(latency=0.15, variations=PIPELINED_VARIATIONS, rounds=3, behaviour_tasks=24)
+    # five pairs in the full bench: its three gave 1.04, 1.12, 1.16 on a day the quick bench's three gave
+    # 1.06, 1.01, 0.96; two more pairs cost ~80 s, which the quick bench's 8 minutes cannot spare
+    pipe = await pipelining(latency=0.15, variations=PIPELINED_VARIATIONS, rounds=3 if quick else 5,
+                            behaviour_tasks=24)
     b = pipe["behaviour"]
     print(stamp(t0) + f"4. pipelining ({pipe['tasks']} tasks, the medians of {len(pipe['pairs'])} pairs, their ratios "
           + ", ".join(f"{p[2]:.2f}" for p in pipe["pairs"]) + f"): LLM only {pipe['llm_only_s']:.1f} s, "
