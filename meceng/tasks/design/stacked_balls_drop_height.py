@@ -23,6 +23,15 @@ from meceng.tasks.base import Param, SimSettings
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
+#: The stacked balls' design tasks (405, 433) take task 41's balls with a gap of 5-20 mm (not 0.1-0.2 m), so that
+#: the upper ball lands while the lower one is still pressed into the floor, and a smaller offset.
+SMALL_GAP = {"gap": Param("gap", 0.005, 0.02, "m", digits=2), "offset": Param("offset", 0.002, 0.01, "m", digits=2)}
+
+
+def small_gap_params(open_name: str) -> tuple[Param, ...]:
+    """Task 41's parameters with the small gap, less the one the design leaves open."""
+    return tuple(SMALL_GAP.get(p.name, p) for p in STACKED.params if p.name != open_name)
+
 
 def upper_ball_height(times: np.ndarray, q: np.ndarray, values: dict) -> float:
     z = q[:, 9]  # ball 1 is the second rigid body: position in columns 7..9
@@ -51,17 +60,7 @@ TASK = DesignModel(
     name="stacked balls drop height",
     system=STACKED,
     open_description=STACKED.open_description.replace("[0, 0, {height}] m", "[0, 0, H] m").replace("{height} + r0", "H + r0"),
-    params=(
-        Param("mass0", 0.2, 0.6, "kg"),
-        Param("radius0", 0.05, 0.08, "m"),
-        Param("mass1", 0.02, 0.1, "kg"),
-        Param("radius1", 0.02, 0.04, "m"),
-        Param("gap", 0.005, 0.02, "m", digits=2),
-        Param("offset", 0.002, 0.01, "m", digits=2),
-        Param("stiffness", 2e4, 5e4, "N/m", digits=2),
-        Param("restitution", 0.6, 0.95, "", digits=2),
-        Param("gravity", 9.78, 9.83, "m/s^2", digits=4),
-    ),
+    params=small_gap_params("height"),
     variables=(DesignVariable("height", 0.3, 0.8, "m", "the start height H of the lower ball's centre"),),
     spec=Spec("the largest height of the upper ball's centre after it is thrown up", "extreme", "m",
               upper_ball_height),

@@ -22,7 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from meceng.tasks.base import Param, SimSettings
+from meceng.tasks.base import SimSettings
+from meceng.tasks.design.stacked_balls_drop_height import small_gap_params
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
@@ -57,17 +58,7 @@ TASK = DesignModel(
     name="stacked balls lower rebound",
     system=STACKED,
     open_description=STACKED.open_description.replace("e = {restitution}", "e"),
-    params=(
-        Param("mass0", 0.2, 0.6, "kg"),
-        Param("radius0", 0.05, 0.08, "m"),
-        Param("mass1", 0.02, 0.1, "kg"),
-        Param("radius1", 0.02, 0.04, "m"),
-        Param("height", 0.3, 0.8, "m"),
-        Param("gap", 0.005, 0.02, "m", digits=2),
-        Param("offset", 0.002, 0.01, "m", digits=2),
-        Param("stiffness", 2e4, 5e4, "N/m", digits=2),
-        Param("gravity", 9.78, 9.83, "m/s^2", digits=4),
-    ),
+    params=small_gap_params("restitution"),
     variables=(DesignVariable("restitution", 0.5, 0.95, "",
                               "the coefficient of restitution e of every contact (floor and ball-ball)"),),
     spec=Spec("the largest height of the lower ball's centre after its first impact on the floor", "extreme", "m",
