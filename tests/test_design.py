@@ -87,6 +87,14 @@ def _design_models() -> list[DesignModel]:
     return [m for m in default_registry() if isinstance(m, DesignModel)]
 
 
+def test_an_estimate_is_solved_on_its_grid_for_the_closest_value_the_first_of_equals() -> None:
+    from meceng.tasks.design_base import closest_on_grid
+
+    grid = np.linspace(0.0, 2.0, 201)
+    assert closest_on_grid(grid, lambda x: x**2, 2.0) == pytest.approx(1.41)
+    assert closest_on_grid(grid, lambda x: (x - 1.0) ** 2, 0.25) == pytest.approx(0.5)  # 1.5 predicts the same
+
+
 def test_level_4_is_big_enough_and_every_module_is_named_after_its_slug() -> None:
     models = _design_models()
     assert len(models) >= 20, [m.slug for m in models]

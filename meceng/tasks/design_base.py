@@ -42,6 +42,12 @@ Measure = Callable[[np.ndarray, np.ndarray, dict[str, Any]], float]
 Estimate = Callable[[dict[str, Any], float], dict[str, float]]
 
 
+def closest_on_grid(grid: np.ndarray, predict: Callable[[float], float], target: float) -> float:
+    """The grid value whose predicted quantity is closest to ``target`` (the first of equals): how an
+    estimate is solved for its design where its closed form has no inverse, or several."""
+    return float(grid[int(np.argmin([abs(predict(float(x)) - target) for x in grid]))])
+
+
 @dataclass(frozen=True)
 class DesignVariable:
     """One value left open: its name in the program and in ``DESIGN``, and its allowed range."""

@@ -21,14 +21,13 @@ import numpy as np
 
 from meceng.tasks.billiard_with_4_spheres import TASK as BILLIARD
 from meceng.tasks.design.billiard_cue_offset import cue_ball_final_y, rigid_final_y
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
     chosen = {**values, "velocity": 3.0}
-    offsets = np.linspace(0.0, 0.05, 50001)
-    ys = np.array([rigid_final_y(chosen, o) for o in offsets])
-    return {"offset": float(offsets[np.argmin(np.abs(ys - target))]), "velocity": 3.0}
+    offset = closest_on_grid(np.linspace(0.0, 0.05, 50001), lambda o: rigid_final_y(chosen, o), target)
+    return {"offset": offset, "velocity": 3.0}
 
 
 TASK = DesignModel(

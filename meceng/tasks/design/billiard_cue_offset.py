@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.billiard_with_4_spheres import TASK as BILLIARD
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 
 
 def cue_ball_final_y(times: np.ndarray, q: np.ndarray, values: dict) -> float:
@@ -36,9 +36,7 @@ def rigid_final_y(values: dict, offset: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    offsets = np.linspace(0.0, 0.05, 50001)
-    ys = np.array([rigid_final_y(values, o) for o in offsets])
-    return {"offset": float(offsets[np.argmin(np.abs(ys - target))])}
+    return {"offset": closest_on_grid(np.linspace(0.0, 0.05, 50001), lambda o: rigid_final_y(values, o), target)}
 
 
 TASK = DesignModel(

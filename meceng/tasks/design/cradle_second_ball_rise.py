@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import Param, SimSettings
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.newtons_cradle import TASK as CRADLE
 
 #: rods short enough for the first swing to end before the last ball is back; stiff enough contacts
@@ -57,9 +57,7 @@ def rigid_rise(values: dict, e: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    es = np.linspace(0.5, 1.0, 5001)
-    rises = np.array([rigid_rise(values, e) for e in es])
-    return {"restitution": float(es[np.argmin(np.abs(rises - target))])}
+    return {"restitution": closest_on_grid(np.linspace(0.5, 1.0, 5001), lambda e: rigid_rise(values, e), target)}
 
 
 TASK = DesignModel(

@@ -25,7 +25,7 @@ import numpy as np
 
 from meceng.tasks.base import SimSettings
 from meceng.tasks.design.net_ball_deepest_point import START_GAP, ball_height, centre_compliance
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.design_measures import first_crossing
 from meceng.tasks.grid_mesh_and_large_sphere_impact import TASK as NET
 
@@ -52,9 +52,8 @@ def linear_release_time(values: dict, prestrain: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    strains = np.linspace(0.005, 0.3, 29501)
-    times = np.array([linear_release_time(values, s) for s in strains])
-    return {"prestrain": float(strains[np.argmin(np.abs(times - target))])}
+    grid = np.linspace(0.005, 0.3, 29501)
+    return {"prestrain": closest_on_grid(grid, lambda p: linear_release_time(values, p), target)}
 
 
 TASK = DesignModel(

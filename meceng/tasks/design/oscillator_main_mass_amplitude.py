@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import Param, round_significant
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.double_mass_oscillator import TASK as OSCILLATOR
 
 
@@ -44,9 +44,8 @@ def undamped_amplitude(values: dict, k2: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    k2 = np.linspace(100.0, 800.0, 701)
-    gap = np.array([undamped_amplitude(values, k) for k in k2]) - target
-    return {"stiffness2": float(k2[int(np.argmin(np.abs(gap)))])}
+    grid = np.linspace(100.0, 800.0, 701)
+    return {"stiffness2": closest_on_grid(grid, lambda k: undamped_amplitude(values, k), target)}
 
 
 TASK = DesignModel(

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import Param, SimSettings
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
 #: The stacked balls' design tasks (405, 433) take task 41's balls with a gap of 5-20 mm (not 0.1-0.2 m), so that
@@ -50,9 +50,7 @@ def rigid_height(values: dict, height: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    drops = np.linspace(0.1, 2.0, 19001)
-    heights = np.array([rigid_height(values, h) for h in drops])
-    return {"height": float(drops[np.argmin(np.abs(heights - target))])}
+    return {"height": closest_on_grid(np.linspace(0.1, 2.0, 19001), lambda h: rigid_height(values, h), target)}
 
 
 TASK = DesignModel(

@@ -24,7 +24,7 @@ import numpy as np
 
 from meceng.tasks.base import SimSettings
 from meceng.tasks.design.stacked_balls_drop_height import small_gap_params
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
 
@@ -48,9 +48,7 @@ def rigid_rebound(values: dict, e: float) -> float:
 
 
 def estimate(values: dict, target: float) -> dict[str, float]:
-    es = np.linspace(0.3, 1.0, 7001)
-    heights = np.array([rigid_rebound(values, e) for e in es])
-    return {"restitution": float(es[np.argmin(np.abs(heights - target))])}
+    return {"restitution": closest_on_grid(np.linspace(0.3, 1.0, 7001), lambda e: rigid_rebound(values, e), target)}
 
 
 TASK = DesignModel(

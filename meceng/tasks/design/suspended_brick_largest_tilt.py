@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import Param
-from meceng.tasks.design_base import DesignModel, DesignVariable, Spec
+from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
 from meceng.tasks.design_measures import body_axis
 from meceng.tasks.suspended_rigid_body import TASK as BRICK
 
@@ -49,7 +49,7 @@ def _tilt(values: dict, kh: float) -> float:
 
 def estimate(values: dict, target: float) -> dict[str, float]:
     grid = np.geomspace(*KH_RANGE, 2001)  # the estimated tilt rises and falls with kh: the closest in range
-    return {"stiffness_h": float(grid[np.argmin([abs(_tilt(values, kh) - target) for kh in grid])])}
+    return {"stiffness_h": closest_on_grid(grid, lambda kh: _tilt(values, kh), target)}
 
 
 TASK = DesignModel(
