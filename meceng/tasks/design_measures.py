@@ -73,3 +73,10 @@ def value_at(times: np.ndarray, signal: np.ndarray, t: float) -> float:
     if t < times[0] - 1e-12 or t > times[-1] + 1e-12:
         return float("nan")
     return float(np.interp(t, times, signal))
+
+
+def highest_after_first_rise(signal: np.ndarray) -> float:
+    """The largest value from the first step on which ``signal`` rises (a ball's height after its
+    first rebound); ``nan`` if it never rises."""
+    rising = np.nonzero(np.diff(signal) > 0.0)[0]
+    return float(np.max(signal[rising[0]:])) if rising.size else float("nan")

@@ -21,6 +21,7 @@ import numpy as np
 
 from meceng.tasks.base import Param, SimSettings
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
+from meceng.tasks.design_measures import highest_after_first_rise
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
 #: The stacked balls' design tasks (405, 433) take task 41's balls with a gap of 5-20 mm (not 0.1-0.2 m), so that
@@ -34,17 +35,24 @@ def small_gap_params(open_name: str) -> tuple[Param, ...]:
 
 
 def upper_ball_height(times: np.ndarray, q: np.ndarray, values: dict) -> float:
-    z = q[:, 9]  # ball 1 is the second rigid body: position in columns 7..9
-    rising = np.nonzero(np.diff(z) > 0.0)[0]
-    return float(np.max(z[rising[0]:])) if rising.size else float("nan")
+    return highest_after_first_rise(q[:, 9])  # ball 1 is the second rigid body: position in columns 7..9
+
+
+def rigid_meeting(values: dict, height: float, e: float) -> tuple[float, float, float, float]:
+    """Rigid, head-on: where and how fast the balls meet after the lower one's floor rebound (with e),
+    dropped from ``height``: (lower ball's z, its speed up, upper ball's z, its speed, negative down)."""
+    g, gap, r0 = values["gravity"], values["gap"], values["radius0"]
+    t_f = np.sqrt(2.0 * (height - r0) / g)
+    dt = gap / ((1.0 + e) * g * t_f)
+    u0, u1 = e * g * t_f - g * dt, -g * t_f - g * dt
+    z0 = r0 + e * g * t_f * dt - 0.5 * g * dt**2
+    z1 = height + r0 + values["radius1"] + gap - 0.5 * g * (t_f + dt) ** 2
+    return z0, u0, z1, u1
 
 
 def rigid_height(values: dict, height: float) -> float:
-    g, e, m0, m1, gap = (values[k] for k in ("gravity", "restitution", "mass0", "mass1", "gap"))
-    t_f = np.sqrt(2.0 * (height - values["radius0"]) / g)
-    dt = gap / ((1.0 + e) * g * t_f)
-    u0, u1 = e * g * t_f - g * dt, -g * t_f - g * dt
-    z1 = height + values["radius0"] + values["radius1"] + gap - 0.5 * g * (t_f + dt) ** 2
+    g, e, m0, m1 = (values[k] for k in ("gravity", "restitution", "mass0", "mass1"))
+    _, u0, z1, u1 = rigid_meeting(values, height, e)
     v1 = (m0 * u0 * (1.0 + e) + (m1 - e * m0) * u1) / (m0 + m1)
     return z1 + max(v1, 0.0) ** 2 / (2.0 * g)
 

@@ -23,23 +23,19 @@ from __future__ import annotations
 import numpy as np
 
 from meceng.tasks.base import SimSettings
-from meceng.tasks.design.stacked_balls_drop_height import small_gap_params
+from meceng.tasks.design.stacked_balls_drop_height import rigid_meeting, small_gap_params
 from meceng.tasks.design_base import DesignModel, DesignVariable, Spec, closest_on_grid
+from meceng.tasks.design_measures import highest_after_first_rise
 from meceng.tasks.sphere_sphere_and_sphere_ground_impact import TASK as STACKED
 
 
 def lower_ball_rebound(times: np.ndarray, q: np.ndarray, values: dict) -> float:
-    z = q[:, 2]  # ball 0 is the first rigid body: position in columns 0..2
-    rising = np.nonzero(np.diff(z) > 0.0)[0]
-    return float(np.max(z[rising[0]:])) if rising.size else float("nan")
+    return highest_after_first_rise(q[:, 2])  # ball 0 is the first rigid body: position in columns 0..2
 
 
 def rigid_rebound(values: dict, e: float) -> float:
-    g, m0, m1, gap, r0 = (values[k] for k in ("gravity", "mass0", "mass1", "gap", "radius0"))
-    t_f = np.sqrt(2.0 * (values["height"] - r0) / g)
-    dt = gap / ((1.0 + e) * g * t_f)
-    u0, u1 = e * g * t_f - g * dt, -g * t_f - g * dt  # lower ball up, upper ball down, when they meet
-    z0 = r0 + e * g * t_f * dt - 0.5 * g * dt**2
+    g, m0, m1, r0 = (values[k] for k in ("gravity", "mass0", "mass1", "radius0"))
+    z0, u0, _, u1 = rigid_meeting(values, values["height"], e)
     v0 = (m0 * u0 + m1 * u1 - e * m1 * (u0 - u1)) / (m0 + m1)
     if v0 < 0.0:  # driven down again: back to the floor from z0 with |v0|, rebound with e
         v0 = e * np.sqrt(v0**2 + 2.0 * g * (z0 - r0))
